@@ -1,0 +1,125 @@
+// polyDEM: everything a simulation is set up with, as plain data.
+// Front ends (demFoam reads constant/demProperties) fill it; System checks it.
+#pragma once
+
+#include "polyDEM/TriangleMesh.hpp"
+#include "polyDEM/Vec3.hpp"
+
+#include <string>
+#include <vector>
+
+namespace polydem
+{
+
+enum class ContactLaw
+{
+    hertzMindlin,        //!< Hertz normal, Mindlin-Deresiewicz (no-slip) tangential
+    linearSpringDashpot  //!< Cundall-Strack linear spring and dashpot
+};
+
+enum class RollingModel
+{
+    none,
+    constantTorque,      //!< type A (Ai et al. 2011): M = -mu_r R* Fn w_rel/|w_rel|
+    elasticPlastic       //!< type C (Ai et al. 2011): EPSD spring-dashpot, capped
+};
+
+enum class ShapeKind
+{
+    sphere,
+    polyhedron
+};
+
+enum class MotionKind
+{
+    fixed,
+    translation,  //!< constant velocity
+    rotation      //!< constant angular velocity about an axis through a point
+};
+
+struct Material
+{
+    std::string name;
+    double youngsModulus = 0;   //!< [Pa]
+    double poissonsRatio = 0;   //!< [-]
+    double density = 0;         //!< [kg/m3]
+};
+
+//- Interaction properties of a pair of materials
+struct PairProperties
+{
+    double restitution = 0.5;     //!< normal coefficient of restitution
+    double friction = 0.5;        //!< Coulomb sliding friction
+    double rollingFriction = 0;   //!< rolling-resistance coefficient mu_r
+    double rollingDamping = 0.3;  //!< EPSD viscous damping ratio eta_r
+};
+
+struct ContactModel
+{
+    ContactLaw law = ContactLaw::hertzMindlin;
+    RollingModel rolling = RollingModel::none;
+    //- Linear law: normal stiffness [N/m]
+    double normalStiffness = 0;
+    //- Linear law: tangential / normal stiffness
+    double tangentialStiffnessRatio = 2.0 / 7.0;
+};
+
+struct ParticleType
+{
+    std::string name;
+    ShapeKind shape = ShapeKind::sphere;
+    int material = 0;
+    //- Default sphere radius (insertion may override per particle) [m]
+    double radius = 0;
+};
+
+struct WallMotion
+{
+    MotionKind kind = MotionKind::fixed;
+    Vec3 velocity;           //!< translation [m/s]
+    Vec3 origin;             //!< a point on the rotation axis [m]
+    Vec3 axis{0, 0, 1};      //!< rotation axis (normalised by System)
+    double omega = 0;        //!< angular speed [rad/s], right-handed about axis
+};
+
+struct PlaneWall
+{
+    std::string name;
+    Vec3 point;              //!< a point on the plane at t = 0
+    Vec3 normal{0, 0, 1};    //!< pointing into the particle side
+    int material = 0;
+    WallMotion motion;
+};
+
+struct MeshWall
+{
+    std::string name;
+    TriangleMesh mesh;       //!< geometry at t = 0
+    int material = 0;
+    WallMotion motion;
+};
+
+struct SimulationConfig
+{
+    double timeStep = 0;            //!< [s]
+    Vec3 gravity{0, 0, -9.81};
+    //- Particles leaving this box are removed (an outlet)
+    Vec3 domainMin{-1e30, -1e30, -1e30}, domainMax{1e30, 1e30, 1e30};
+    //- Verlet skin as a fraction of the largest particle diameter
+    double skinFraction = 0.2;
+    std::vector<Material> materials;
+    //- materials.size()^2, row-major, symmetric
+    std::vector<PairProperties> pairs;
+    ContactModel contact;
+    std::vector<ParticleType> types;
+    std::vector<PlaneWall> planes;
+    std::vector<MeshWall> meshes;
+    //- Back end by name: "cpu" or "cuda"
+    std::string device = "cpu";
+    //- Where the config came from, for messages
+    std::string source = "demProperties";
+
+    const PairProperties& pair(int a, int b) const { return pairs[a * materials.size() + b]; }
+};
+
+} // namespace polydem

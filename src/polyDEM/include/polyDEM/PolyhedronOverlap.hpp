@@ -1,0 +1,646 @@
+// polyDEM: overlap (intersection) of convex polyhedra with polyhedra, planes,
+// spheres and wall triangles, for the overlap-volume contact law.
+//
+// Polyhedron-polyhedron: the intersection I = A n B of two convex polyhedra is
+// bounded by (faces of A clipped to B) u (faces of B clipped to A). Each face
+// polygon is clipped by the other shape's half-spaces with the re-entrant
+// polygon clipper of Sutherland & Hodgman (1974, "Reentrant polygon clipping",
+// Comm. ACM 17:32-42). The volume and centroid of I follow from the divergence
+// theorem, as a sum of signed tetrahedra from a point of I to the fan
+// triangles of the clipped polygons (cancellation stays at the size of I, not
+// of the particles). The contact normal is Feng's energy-conserving normal
+// (Feng, Y.T. 2021, "An energy-conserving contact theory for discrete element
+// modelling of arbitrarily shaped particles: basic framework and general
+// contact model", CMAME 373:113454):
+//     S = -dV/dx_B = (area vector of the part of A's surface inside B)
+//                  = -(area vector of the part of B's surface inside A),
+// n = S/|S| points from A to B and is continuous when the contact switches
+// between vertex-face, edge-edge and face-face. |S| (the projected contact
+// area) is returned as contactArea, S as areaVector.
+//
+// Robustness: a vertex within tol = 1e-12 * (bounding radius) of a clipping
+// plane counts as on it (no near-duplicate vertices are created); a face of B
+// lying in a face plane of A with the same orientation is counted once (on A's
+// side); a contact with V <= 1e-14 * min(V_A, V_B) is reported as not
+// touching, so exactly touching shapes give touching = false and no NaN.
+//
+// Early outs, cheapest first: bounding spheres; a cached separating axis from
+// the previous step (in/out, world frame); the face normals of A and B
+// (separating axis theorem, Gottschalk et al. 1996); optionally the cross
+// products of edge pairs. The edge axes are off by default: they cost
+// O(E_A E_B (V_A + V_B)), more than the clipping itself, which is exact and
+// returns touching = false for shapes that only the edge axes separate.
+//
+// Walls: a plane is treated as the solid half-space below it and a wall
+// triangle as the solid prism below it (the half-space restricted to the
+// triangle's normal prism, depth 2 r_B + penetration); both are built as small
+// convex polyhedra on the stack and go through the same clipper, so the
+// volume, centroid and normal are exact for them. Limit of the triangle
+// model: the volumes of a particle over several triangles add, which is exact
+// for coplanar neighbours and flat or convex meshes seen from the fluid side,
+// but counts the wedge twice at a concave edge (an inside corner of a
+// container); the normal is then the area-weighted mean of the two walls.
+//
+// Sphere-polyhedron: distance based (not an exact volume). The deepest point
+// and the normal come from the closest feature of the polyhedron (face, edge
+// or vertex; the face of least penetration when the centre is inside), the
+// volume and centroid are those of the spherical cap of that depth. This is
+// exact for a face contact and an upper bound for edge and vertex contacts.
+//
+// All functions are host+device, allocate nothing, and use fixed stack
+// buffers sized by the caps of ConvexPolyhedron.hpp (about 8 kB per call).
+#pragma once
+
+#include "polyDEM/ConvexPolyhedron.hpp"
+#include "polyDEM/Macros.hpp"
+#include "polyDEM/Quaternion.hpp"
+#include "polyDEM/Vec3.hpp"
+
+namespace polydem
+{
+
+//- Result of an overlap query; all vectors in the world frame
+struct OverlapResult
+{
+    bool touching = false;
+    double volume = 0;      //!< overlap volume V
+    Vec3 centroid;          //!< centroid of the intersection (the contact point)
+    Vec3 normal{0, 0, 1};   //!< unit, from A to B: S/|S|, S = -dV/dx_B
+    Vec3 areaVector;        //!< S = -dV/dx_B (Feng 2021)
+    double contactArea = 0; //!< |S|, the contact area projected on the normal plane
+};
+
+//- Relative tolerances (times the bounding radius / the smaller volume)
+constexpr double kOverlapPlaneTolerance = 1e-12;
+constexpr double kOverlapTouchingVolume = 1e-14;
+
+namespace overlapDetail
+{
+
+constexpr int kClipBuffer = kMaxFaceVertices + kMaxPolyhedronFaces;
+
+//- Surface integrals over the boundary of the intersection, relative to a
+//  reference point o on the intersection (the first clipped vertex)
+struct BoundaryIntegrals
+{
+    bool haveOrigin = false;
+    Vec3 origin;
+    double sixVolume = 0;     //!< 6 V
+    Vec3 volumeMoment;        //!< sum 6 V_t (q0 + q1 + q2), centroid = / (4 sixVolume)
+    Vec3 twiceAreaA;          //!< 2 x area vector of A's clipped faces
+    Vec3 twiceAreaB;          //!< 2 x area vector of B's clipped faces
+    double twiceSurface = 0;  //!< 2 x area of all clipped faces
+    Vec3 surfaceMoment;       //!< sum 2 a_t (q0 + q1 + q2): surface centroid = / (3 twiceSurface)
+};
+
+PD_INLINE void addPolygon(BoundaryIntegrals& acc, const Vec3* poly, int n, bool fromA)
+{
+    if (!acc.haveOrigin)
+    {
+        acc.haveOrigin = true;
+        acc.origin = poly[0];
+    }
+    const Vec3 q0 = poly[0] - acc.origin;
+    Vec3 twiceArea;
+    for (int i = 1; i + 1 < n; ++i)
+    {
+        const Vec3 q1 = poly[i] - acc.origin;
+        const Vec3 q2 = poly[i + 1] - acc.origin;
+        const double v6 = dot(q0, cross(q1, q2));
+        const Vec3 sum = q0 + q1 + q2;
+        acc.sixVolume += v6;
+        acc.volumeMoment += v6 * sum;
+        const Vec3 a2 = cross(q1 - q0, q2 - q0);
+        const double a2n = norm(a2);
+        twiceArea += a2;
+        acc.twiceSurface += a2n;
+        acc.surfaceMoment += a2n * sum;
+    }
+    if (fromA)
+    {
+        acc.twiceAreaA += twiceArea;
+    }
+    else
+    {
+        acc.twiceAreaB += twiceArea;
+    }
+}
+
+//- Clip the convex polygon in[0..n) by the half-spaces dot(pn[j], x) <= pd[j]
+//  (Sutherland-Hodgman). Returns the vertex count (0 if empty) and sets out to
+//  the buffer holding the result. With dropSameCoplanar, a polygon lying in a
+//  clipping plane with the same orientation as faceNormal is dropped (so that
+//  coincident faces of A and B are counted once).
+inline PD_HD int clipPolygon(Vec3* bufA, Vec3* bufB, int n, const Vec3* pn, const double* pd,
+                             int nPlanes, const Vec3& faceNormal, bool dropSameCoplanar,
+                             double tol, Vec3*& out)
+{
+    Vec3* cur = bufA;
+    Vec3* nxt = bufB;
+    double s[kClipBuffer];
+    for (int j = 0; j < nPlanes && n >= 3; ++j)
+    {
+        bool anyIn = false, anyOut = false;
+        for (int i = 0; i < n; ++i)
+        {
+            s[i] = dot(pn[j], cur[i]) - pd[j];
+            anyIn = anyIn || s[i] < -tol;
+            anyOut = anyOut || s[i] > tol;
+        }
+        if (!anyOut)
+        {
+            // Inside or on: unchanged, unless the whole polygon lies in the plane
+            if (!anyIn && dropSameCoplanar && dot(pn[j], faceNormal) > 0)
+            {
+                n = 0;
+            }
+            continue;
+        }
+        if (!anyIn)
+        {
+            n = 0; // outside, or touching along a point/edge only
+            break;
+        }
+        int m = 0;
+        for (int i = 0; i < n; ++i)
+        {
+            const int k = (i + 1 == n) ? 0 : i + 1;
+            const double sp = s[i], sq = s[k];
+            const bool crosses = (sp < -tol && sq > tol) || (sp > tol && sq < -tol);
+            if (crosses && m < kClipBuffer)
+            {
+                const double t = sp / (sp - sq);
+                nxt[m++] = cur[i] + t * (cur[k] - cur[i]);
+            }
+            if (sq <= tol && m < kClipBuffer)
+            {
+                nxt[m++] = cur[k];
+            }
+        }
+        n = m;
+        Vec3* tmp = cur;
+        cur = nxt;
+        nxt = tmp;
+    }
+    out = cur;
+    return n >= 3 ? n : 0;
+}
+
+//- Clip every face of X (vertices xv, planes of the view) by the planes of Y
+//  and add the pieces to the boundary integrals
+inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron& X,
+                                  const Vec3* xv, const Vec3* xn, const Vec3* yn,
+                                  const double* yd, int nyPlanes, bool fromA, double tol)
+{
+    Vec3 bufA[kClipBuffer];
+    Vec3 bufB[kClipBuffer];
+    for (int f = 0; f < X.nFaces; ++f)
+    {
+        const int m = X.faceSize(f);
+        for (int i = 0; i < m; ++i)
+        {
+            bufA[i] = xv[X.faceVertex[X.faceStart[f] + i]];
+        }
+        Vec3* poly = nullptr;
+        const int n = clipPolygon(bufA, bufB, m, yn, yd, nyPlanes, xn[f], !fromA, tol, poly);
+        if (n >= 3)
+        {
+            addPolygon(acc, poly, n, fromA);
+        }
+    }
+}
+
+//- True if the projections of the point sets a and b on axis are disjoint
+PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na, const Vec3* b, int nb)
+{
+    double minA = 1e300, maxA = -1e300, minB = 1e300, maxB = -1e300;
+    for (int i = 0; i < na; ++i)
+    {
+        const double p = dot(axis, a[i]);
+        minA = p < minA ? p : minA;
+        maxA = p > maxA ? p : maxA;
+    }
+    for (int i = 0; i < nb; ++i)
+    {
+        const double p = dot(axis, b[i]);
+        minB = p < minB ? p : minB;
+        maxB = p > maxB ? p : maxB;
+    }
+    return maxA <= minB || maxB <= minA;
+}
+
+//- Overlap of A and B, B given by its pose in A's body frame; result in A's frame.
+//  cachedAxis (A frame, may be null) is tried first and updated.
+inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const ConvexPolyhedron& B,
+                                             const Quaternion& qB, const Vec3& posB,
+                                             Vec3* cachedAxis, bool testEdgeAxes)
+{
+    OverlapResult r;
+    const double rA = A.boundingRadius, rB = B.boundingRadius;
+    if (normSqr(posB) >= (rA + rB) * (rA + rB))
+    {
+        return r;
+    }
+    const double scale = rA > rB ? rA : rB;
+    const double tol = kOverlapPlaneTolerance * scale;
+
+    // B in A's frame
+    Vec3 bv[kMaxPolyhedronVertices];
+    Vec3 bn[kMaxPolyhedronFaces];
+    double bd[kMaxPolyhedronFaces];
+    for (int i = 0; i < B.nVertices; ++i)
+    {
+        bv[i] = posB + rotate(qB, B.vertices[i]);
+    }
+    for (int f = 0; f < B.nFaces; ++f)
+    {
+        bn[f] = rotate(qB, B.faceNormals[f]);
+        bd[f] = B.faceOffsets[f] + dot(bn[f], posB);
+    }
+
+    // Separating axes: cached, faces of A, faces of B, (edges)
+    if (cachedAxis && normSqr(*cachedAxis) > 0
+        && separatedAlong(*cachedAxis, A.vertices, A.nVertices, bv, B.nVertices))
+    {
+        return r;
+    }
+    for (int f = 0; f < A.nFaces; ++f)
+    {
+        double minB = 1e300;
+        for (int i = 0; i < B.nVertices; ++i)
+        {
+            const double p = dot(A.faceNormals[f], bv[i]);
+            minB = p < minB ? p : minB;
+        }
+        if (minB >= A.faceOffsets[f])
+        {
+            if (cachedAxis) *cachedAxis = A.faceNormals[f];
+            return r;
+        }
+    }
+    for (int f = 0; f < B.nFaces; ++f)
+    {
+        double minA = 1e300;
+        for (int i = 0; i < A.nVertices; ++i)
+        {
+            const double p = dot(bn[f], A.vertices[i]);
+            minA = p < minA ? p : minA;
+        }
+        if (minA >= bd[f])
+        {
+            if (cachedAxis) *cachedAxis = bn[f];
+            return r;
+        }
+    }
+    if (testEdgeAxes)
+    {
+        for (int i = 0; i < A.nEdges; ++i)
+        {
+            const Vec3 ea = A.vertices[A.edges[i].b] - A.vertices[A.edges[i].a];
+            for (int j = 0; j < B.nEdges; ++j)
+            {
+                const Vec3 eb = bv[B.edges[j].b] - bv[B.edges[j].a];
+                const Vec3 axis = cross(ea, eb);
+                if (normSqr(axis) <= 1e-20 * normSqr(ea) * normSqr(eb))
+                {
+                    continue; // parallel edges: covered by the face axes
+                }
+                if (separatedAlong(axis, A.vertices, A.nVertices, bv, B.nVertices))
+                {
+                    if (cachedAxis) *cachedAxis = axis / norm(axis);
+                    return r;
+                }
+            }
+        }
+    }
+
+    // Boundary of A n B: faces of A inside B, faces of B inside A
+    BoundaryIntegrals acc;
+    addClippedFaces(acc, A, A.vertices, A.faceNormals, bn, bd, B.nFaces, true, tol);
+    addClippedFaces(acc, B, bv, bn, A.faceNormals, A.faceOffsets, A.nFaces, false, tol);
+
+    const double volume = acc.sixVolume / 6.0;
+    const double minVolume = A.volume < B.volume ? A.volume : B.volume;
+    if (!(volume > kOverlapTouchingVolume * minVolume))
+    {
+        return r;
+    }
+    r.touching = true;
+    r.volume = volume;
+    r.centroid = acc.origin + acc.volumeMoment / (4.0 * acc.sixVolume);
+    // S = -dV/dx_B; A's part and minus B's part agree on a closed surface
+    r.areaVector = 0.25 * (acc.twiceAreaA - acc.twiceAreaB);
+    r.contactArea = norm(r.areaVector);
+    if (r.contactArea > 1e-300)
+    {
+        r.normal = r.areaVector / r.contactArea;
+    }
+    else
+    {
+        // Coincident shapes: no preferred direction; fall back to centre line
+        const double d = norm(posB);
+        r.normal = d > 1e-300 ? posB / d : Vec3(0, 0, 1);
+    }
+    if (cachedAxis) *cachedAxis = r.normal;
+    return r;
+}
+
+//- A small convex polyhedron built on the stack (wall box or prism)
+struct LocalPolyhedron
+{
+    Vec3 vertices[8];
+    Vec3 normals[6];
+    double offsets[6];
+    int faceStart[7];
+    int faceVertex[24];
+    PolyhedronEdge edges[12];
+    ConvexPolyhedron shape;
+
+    PD_INLINE void finish(int nV, int nF, double radius, double volume)
+    {
+        for (int f = 0; f < nF; ++f)
+        {
+            const Vec3& p0 = vertices[faceVertex[faceStart[f]]];
+            const Vec3& p1 = vertices[faceVertex[faceStart[f] + 1]];
+            const Vec3& p2 = vertices[faceVertex[faceStart[f] + 2]];
+            Vec3 n = cross(p1 - p0, p2 - p0);
+            n = n / norm(n);
+            normals[f] = n;
+            offsets[f] = dot(n, p0);
+        }
+        shape.nVertices = nV;
+        shape.nFaces = nF;
+        shape.nEdges = 0; // not needed: walls never use the edge axes
+        shape.vertices = vertices;
+        shape.faceNormals = normals;
+        shape.faceOffsets = offsets;
+        shape.faceStart = faceStart;
+        shape.faceVertex = faceVertex;
+        shape.edges = edges;
+        shape.boundingRadius = radius;
+        shape.volume = volume;
+    }
+};
+
+//- Box centre c, right-handed unit axes e1, e2, e3, half sizes h
+PD_INLINE void makeBox(LocalPolyhedron& box, const Vec3& c, const Vec3& e1, const Vec3& e2,
+                       const Vec3& e3, const Vec3& h)
+{
+    for (int i = 0; i < 8; ++i)
+    {
+        const double sx = (i & 1) ? 1.0 : -1.0;
+        const double sy = (i & 2) ? 1.0 : -1.0;
+        const double sz = (i & 4) ? 1.0 : -1.0;
+        box.vertices[i] = c + (sx * h.x) * e1 + (sy * h.y) * e2 + (sz * h.z) * e3;
+    }
+    // Faces -x, +x, -y, +y, -z, +z, counter-clockwise seen from outside
+    const int fv[24] = {0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 2, 6, 7, 3, 0, 2, 3, 1, 4, 5, 7, 6};
+    for (int i = 0; i < 24; ++i)
+    {
+        box.faceVertex[i] = fv[i];
+    }
+    for (int f = 0; f <= 6; ++f)
+    {
+        box.faceStart[f] = 4 * f;
+    }
+    box.finish(8, 6, norm(h), 8.0 * h.x * h.y * h.z);
+}
+
+//- Two unit vectors completing n to a right-handed frame (e1, e2, n)
+PD_INLINE void completeFrame(const Vec3& n, Vec3& e1, Vec3& e2)
+{
+    const Vec3 a = fabs(n.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    e1 = cross(a, n);
+    e1 = e1 / norm(e1);
+    e2 = cross(n, e1);
+}
+
+//- Result from A's frame (rotation qA, origin posA) to the world frame
+PD_INLINE OverlapResult toWorld(OverlapResult r, const Vec3& posA, const Quaternion& qA)
+{
+    if (r.touching)
+    {
+        r.centroid = posA + rotate(qA, r.centroid);
+        r.normal = rotate(qA, r.normal);
+        r.areaVector = rotate(qA, r.areaVector);
+    }
+    return r;
+}
+
+} // namespace overlapDetail
+
+
+//- Overlap of convex polyhedra A and B at poses (posA, qA), (posB, qB).
+//  separatingAxis (world frame, may be null): tried first when non-zero; set
+//  to the separating axis found, or to the contact normal when touching.
+inline PD_HD OverlapResult polyhedronOverlap(const ConvexPolyhedron& A, const Vec3& posA,
+                                             const Quaternion& qA, const ConvexPolyhedron& B,
+                                             const Vec3& posB, const Quaternion& qB,
+                                             Vec3* separatingAxis = nullptr,
+                                             bool testEdgeAxes = false)
+{
+    const Quaternion qAinv = conjugate(qA);
+    const Vec3 posBinA = rotate(qAinv, posB - posA);
+    const Quaternion qBinA = qAinv * qB;
+    Vec3 axisInA;
+    if (separatingAxis)
+    {
+        axisInA = rotate(qAinv, *separatingAxis);
+    }
+    const OverlapResult r = overlapDetail::overlapInFrameOfA(
+        A, B, qBinA, posBinA, separatingAxis ? &axisInA : nullptr, testEdgeAxes);
+    if (separatingAxis)
+    {
+        *separatingAxis = rotate(qA, axisInA);
+    }
+    return overlapDetail::toWorld(r, posA, qA);
+}
+
+//- Overlap of a polyhedron with the solid half-space dot(planeNormal, x - planePoint) <= 0.
+//  planeNormal: unit, pointing out of the wall; the result's normal points from
+//  the wall to the particle (= planeNormal for a flat contact).
+inline PD_HD OverlapResult polyhedronPlaneOverlap(const ConvexPolyhedron& P, const Vec3& pos,
+                                                  const Quaternion& q, const Vec3& planePoint,
+                                                  const Vec3& planeNormal)
+{
+    const double r = P.boundingRadius;
+    const double dist = dot(planeNormal, pos - planePoint);
+    if (dist >= r)
+    {
+        return OverlapResult();
+    }
+    // The wall as a box below the plane, centred under the particle, wider
+    // and deeper than the particle can reach: exact for the half-space
+    Vec3 e1, e2;
+    overlapDetail::completeFrame(planeNormal, e1, e2);
+    const Vec3 origin = pos - dist * planeNormal; // on the plane
+    const double depth = 2.0 * r + (dist < 0 ? -dist : 0.0);
+    overlapDetail::LocalPolyhedron box;
+    overlapDetail::makeBox(box, -0.5 * depth * planeNormal, e1, e2, planeNormal,
+                           Vec3(2.0 * r, 2.0 * r, 0.5 * depth));
+    box.shape.volume = P.volume; // the touching threshold scales with the particle
+    const OverlapResult res =
+        overlapDetail::overlapInFrameOfA(box.shape, P, q, pos - origin, nullptr, false);
+    return overlapDetail::toWorld(res, origin, Quaternion());
+}
+
+//- Overlap of a polyhedron with the wall triangle (t0, t1, t2), counter-clockwise
+//  seen from the fluid side; the wall is the triangle's prism below it (see top).
+inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, const Vec3& pos,
+                                                     const Quaternion& q, const Vec3& t0,
+                                                     const Vec3& t1, const Vec3& t2)
+{
+    Vec3 n = cross(t1 - t0, t2 - t0);
+    const double twiceArea = norm(n);
+    const double r = P.boundingRadius;
+    if (!(twiceArea > 0))
+    {
+        return OverlapResult();
+    }
+    n = n / twiceArea;
+    const double dist = dot(n, pos - t0);
+    if (dist >= r)
+    {
+        return OverlapResult();
+    }
+    // Work relative to the triangle's centroid for accuracy
+    const Vec3 origin = (t0 + t1 + t2) / 3.0;
+    const double depth = 2.0 * r + (dist < 0 ? -dist : 0.0);
+    overlapDetail::LocalPolyhedron prism;
+    const Vec3 t[3] = {t0 - origin, t1 - origin, t2 - origin};
+    double radius = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        prism.vertices[i] = t[i];
+        prism.vertices[i + 3] = t[i] - depth * n;
+        const double ri = norm(prism.vertices[i + 3]);
+        radius = ri > radius ? ri : radius;
+        const double rt = norm(t[i]);
+        radius = rt > radius ? rt : radius;
+    }
+    // Top (0 1 2), bottom (3 5 4), sides (i, i+3, j+3, j)
+    const int fv[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
+    for (int i = 0; i < 18; ++i)
+    {
+        prism.faceVertex[i] = fv[i];
+    }
+    const int fs[6] = {0, 3, 6, 10, 14, 18};
+    for (int f = 0; f < 6; ++f)
+    {
+        prism.faceStart[f] = fs[f];
+    }
+    prism.finish(6, 5, radius, P.volume);
+    const OverlapResult res =
+        overlapDetail::overlapInFrameOfA(prism.shape, P, q, pos - origin, nullptr, false);
+    return overlapDetail::toWorld(res, origin, Quaternion());
+}
+
+//- Overlap of a polyhedron (A) with a sphere (B), distance based (see top):
+//  normal from the polyhedron to the sphere, volume/centroid of the spherical
+//  cap whose depth is the penetration of the sphere past the closest feature.
+inline PD_HD OverlapResult polyhedronSphereOverlap(const ConvexPolyhedron& P, const Vec3& pos,
+                                                   const Quaternion& q, const Vec3& centre,
+                                                   double radius)
+{
+    OverlapResult res;
+    const Vec3 c = rotateInverse(q, centre - pos);
+    if (normSqr(c) >= (P.boundingRadius + radius) * (P.boundingRadius + radius))
+    {
+        return res;
+    }
+    // Signed distance to the face planes
+    int deepFace = 0;
+    double sMax = -1e300;
+    for (int f = 0; f < P.nFaces; ++f)
+    {
+        const double s = dot(P.faceNormals[f], c) - P.faceOffsets[f];
+        if (s > sMax)
+        {
+            sMax = s;
+            deepFace = f;
+        }
+    }
+    double depth;
+    Vec3 normal;
+    if (sMax <= 0)
+    {
+        // Centre inside: leave through the nearest face
+        depth = radius - sMax;
+        normal = P.faceNormals[deepFace];
+    }
+    else
+    {
+        // Closest point: on one of the faces the centre is in front of
+        double bestSqr = 1e300;
+        Vec3 closest;
+        for (int f = 0; f < P.nFaces; ++f)
+        {
+            const Vec3& nf = P.faceNormals[f];
+            const double s = dot(nf, c) - P.faceOffsets[f];
+            if (s <= 0)
+            {
+                continue;
+            }
+            const Vec3 p = c - s * nf;
+            const int m = P.faceSize(f);
+            bool inside = true;
+            for (int i = 0; i < m && inside; ++i)
+            {
+                const Vec3& a = P.faceVertexPoint(f, i);
+                const Vec3& b = P.faceVertexPoint(f, i + 1 == m ? 0 : i + 1);
+                inside = dot(cross(b - a, p - a), nf) >= 0;
+            }
+            if (inside)
+            {
+                if (s * s < bestSqr)
+                {
+                    bestSqr = s * s;
+                    closest = p;
+                }
+                continue;
+            }
+            for (int i = 0; i < m; ++i)
+            {
+                const Vec3& a = P.faceVertexPoint(f, i);
+                const Vec3& b = P.faceVertexPoint(f, i + 1 == m ? 0 : i + 1);
+                const Vec3 ab = b - a;
+                double t = dot(c - a, ab) / normSqr(ab);
+                t = t < 0 ? 0 : (t > 1 ? 1 : t);
+                const Vec3 x = a + t * ab;
+                const double d2 = normSqr(c - x);
+                if (d2 < bestSqr)
+                {
+                    bestSqr = d2;
+                    closest = x;
+                }
+            }
+        }
+        const double dist = sqrt(bestSqr);
+        if (dist >= radius || !(dist > 0))
+        {
+            return res;
+        }
+        depth = radius - dist;
+        normal = (c - closest) / dist;
+    }
+    depth = depth < 2.0 * radius ? depth : 2.0 * radius;
+    const double pi = 3.14159265358979323846;
+    res.volume = pi * depth * depth * (3.0 * radius - depth) / 3.0;
+    if (!(res.volume > kOverlapTouchingVolume * (P.volume < 4.19 * radius * radius * radius
+                                                     ? P.volume
+                                                     : 4.19 * radius * radius * radius)))
+    {
+        return OverlapResult();
+    }
+    res.touching = true;
+    // Cap centroid: 3 (2R - h)^2 / (4 (3R - h)) from the sphere centre
+    const double zBar = 3.0 * (2.0 * radius - depth) * (2.0 * radius - depth)
+                        / (4.0 * (3.0 * radius - depth));
+    res.centroid = c - zBar * normal;
+    res.contactArea = pi * depth * (2.0 * radius - depth);
+    res.normal = normal;
+    res.areaVector = res.contactArea * normal;
+    return overlapDetail::toWorld(res, pos, q);
+}
+
+} // namespace polydem

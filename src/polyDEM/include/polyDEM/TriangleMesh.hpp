@@ -1,0 +1,25 @@
+// polyDEM: a triangle surface (wall geometry, filling region), host side.
+#pragma once
+
+#include "polyDEM/Vec3.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace polydem
+{
+
+struct TriangleMesh
+{
+    //- Shared vertices (duplicates from STL merged)
+    std::vector<Vec3> points;
+    //- Triangles as vertex indices, counter-clockwise seen from outside
+    std::vector<std::array<int, 3>> triangles;
+    //- Where it came from, for messages
+    std::string source;
+
+    std::size_t size() const { return triangles.size(); }
+};
+
+} // namespace polydem

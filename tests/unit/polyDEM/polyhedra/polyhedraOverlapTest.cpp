@@ -1,0 +1,487 @@
+// Tests of PolyhedronOverlap.hpp: overlap volume/centroid against CGAL's exact
+// intersection, Feng's normal against the finite-difference gradient of V,
+// degenerate configurations (coplanar faces, coincident edges and vertices,
+// exact touching), walls (plane, triangles) and spheres.
+
+#include "ExactIntersection.hpp"
+
+#include "ConvexShapeBuilder.hpp"
+#include "ShapeGenerators.hpp"
+
+#include "polyDEM/PolyhedronOverlap.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using namespace polydem;
+
+namespace
+{
+
+constexpr double pi = 3.14159265358979323846;
+
+Quaternion randomRotation(std::mt19937_64& rng)
+{
+    std::normal_distribution<double> g;
+    return normalised(Quaternion{g(rng), g(rng), g(rng), g(rng)});
+}
+
+Vec3 randomDirection(std::mt19937_64& rng)
+{
+    std::normal_distribution<double> g;
+    const Vec3 v(g(rng), g(rng), g(rng));
+    return v / norm(v);
+}
+
+std::vector<Vec3> worldVertices(const ConvexShape& s, const Vec3& pos, const Quaternion& q)
+{
+    std::vector<Vec3> w;
+    for (const Vec3& v : s.vertices)
+    {
+        w.push_back(pos + rotate(q, v));
+    }
+    return w;
+}
+
+bool finite(const OverlapResult& r)
+{
+    return std::isfinite(r.volume) && std::isfinite(r.centroid.x) && std::isfinite(r.centroid.y)
+           && std::isfinite(r.centroid.z) && std::isfinite(r.normal.x)
+           && std::isfinite(r.normal.y) && std::isfinite(r.normal.z)
+           && std::isfinite(r.contactArea);
+}
+
+struct Pose
+{
+    Vec3 pos;
+    Quaternion q;
+};
+
+} // namespace
+
+
+// 1000 random pairs of random rocks in random overlapping poses vs CGAL
+TEST(polyhedraOverlap, randomRocksAgainstExactIntersection)
+{
+    std::mt19937_64 rng(2024);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<ConvexShape> rocks;
+    for (int k = 0; k < 40; ++k)
+    {
+        rocks.push_back(makeRock(0.5 + u(rng), 0.4 + 0.6 * u(rng), 0.4 + 0.6 * u(rng),
+                                 8 + int(u(rng) * 27), 1000 + k));
+    }
+
+    double maxVolumeError = 0, maxCentroidError = 0, maxNormalError = 0, maxAreaError = 0;
+    double timeOurs = 0, timeExact = 0;
+    int pairs = 0, gradientChecks = 0;
+    while (pairs < 1000)
+    {
+        const ConvexShape& A = rocks[rng() % rocks.size()];
+        const ConvexShape& B = rocks[rng() % rocks.size()];
+        const Pose pa{Vec3(u(rng), u(rng), u(rng)), randomRotation(rng)};
+        const double reach = A.boundingRadius + B.boundingRadius;
+        const Pose pb{pa.pos + (0.8 * reach * u(rng)) * randomDirection(rng), randomRotation(rng)};
+
+        auto t0 = std::chrono::steady_clock::now();
+        const OverlapResult r =
+            polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q);
+        auto t1 = std::chrono::steady_clock::now();
+        const test::ExactOverlap ref =
+            test::exactOverlap(worldVertices(A, pa.pos, pa.q), worldVertices(B, pb.pos, pb.q));
+        auto t2 = std::chrono::steady_clock::now();
+        timeOurs += std::chrono::duration<double>(t1 - t0).count();
+        timeExact += std::chrono::duration<double>(t2 - t1).count();
+
+        ASSERT_TRUE(finite(r));
+        const double minVolume = std::min(A.volume, B.volume);
+        if (ref.volume <= 1e-9 * minVolume)
+        {
+            // Separate or grazing: we must agree that the contact is negligible
+            EXPECT_LE(r.volume, 1e-9 * minVolume);
+            continue;
+        }
+        ++pairs;
+        ASSERT_TRUE(r.touching);
+        const double volumeError = std::fabs(r.volume - ref.volume) / ref.volume;
+        const double centroidError = norm(r.centroid - ref.centroid) / std::cbrt(ref.volume);
+        maxVolumeError = std::max(maxVolumeError, volumeError);
+        maxCentroidError = std::max(maxCentroidError, centroidError);
+        EXPECT_LT(volumeError, 1e-9) << "pair " << pairs;
+        EXPECT_LT(centroidError, 1e-9) << "pair " << pairs;
+
+        // Swapping A and B: same volume, opposite normal
+        const OverlapResult rs =
+            polyhedronOverlap(B.view(), pb.pos, pb.q, A.view(), pa.pos, pa.q);
+        EXPECT_NEAR(rs.volume, r.volume, 1e-12 * r.volume);
+        EXPECT_LT(norm(rs.normal + r.normal), 1e-9);
+
+        // Feng's normal: S = -dV/dx_B by central differences (every 5th pair)
+        if (pairs % 5 == 0)
+        {
+            const double h = 1e-6 * std::cbrt(minVolume);
+            Vec3 grad;
+            for (int j = 0; j < 3; ++j)
+            {
+                Vec3 e;
+                e[j] = h;
+                const double vp =
+                    polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos + e, pb.q).volume;
+                const double vm =
+                    polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos - e, pb.q).volume;
+                grad[j] = (vp - vm) / (2 * h);
+            }
+            const double gNorm = norm(grad);
+            if (gNorm > 1e-6 * r.contactArea + 1e-300)
+            {
+                ++gradientChecks;
+                const double normalError = norm(r.normal + grad / gNorm);
+                const double areaError = std::fabs(r.contactArea - gNorm) / gNorm;
+                maxNormalError = std::max(maxNormalError, normalError);
+                maxAreaError = std::max(maxAreaError, areaError);
+                EXPECT_LT(normalError, 1e-5) << "pair " << pairs;
+                EXPECT_LT(areaError, 1e-5) << "pair " << pairs;
+            }
+        }
+    }
+    std::printf("[ polyhedra ] %d pairs: max rel. volume error %.3g, max centroid error / V^(1/3) "
+                "%.3g\n[ polyhedra ] %d gradient checks: max |n - (-grad V)/|grad V|| %.3g, "
+                "max rel. |S| error %.3g\n[ polyhedra ] time per overlap: ours %.3g us, CGAL "
+                "exact %.3g us (incl. misses)\n",
+                pairs, maxVolumeError, maxCentroidError, gradientChecks, maxNormalError,
+                maxAreaError, 1e6 * timeOurs / pairs, 1e6 * timeExact / pairs);
+}
+
+
+// Separated pairs: SAT with and without a cached axis, edge axes on and off
+TEST(polyhedraOverlap, separatingAxisWarmStart)
+{
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    const ConvexShape A = makeRock(1.0, 0.7, 0.6, 24, 3);
+    const ConvexShape B = makeRock(0.8, 0.5, 0.9, 18, 4);
+    int separatedByCache = 0;
+    for (int k = 0; k < 300; ++k)
+    {
+        const Pose pa{Vec3(0, 0, 0), randomRotation(rng)};
+        const Pose pb{(1.2 * u(rng) * (A.boundingRadius + B.boundingRadius)) * randomDirection(rng),
+                      randomRotation(rng)};
+        Vec3 axis;
+        const OverlapResult r0 = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q,
+                                                   &axis, false);
+        const OverlapResult r1 = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q,
+                                                   nullptr, true);
+        EXPECT_EQ(r0.touching, r1.touching);
+        EXPECT_EQ(r0.volume, r1.volume);
+        // Second call with the cached axis: same answer
+        Vec3 axis2 = axis;
+        const OverlapResult r2 = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q,
+                                                   &axis2, false);
+        EXPECT_EQ(r0.touching, r2.touching);
+        EXPECT_EQ(r0.volume, r2.volume);
+        if (!r0.touching && normSqr(axis) > 0)
+        {
+            ++separatedByCache;
+        }
+    }
+    EXPECT_GT(separatedByCache, 0);
+}
+
+
+// Identical aligned cubes: coplanar faces of the same orientation everywhere
+TEST(polyhedraOverlap, alignedCubesFaceToFace)
+{
+    const ConvexShape cube = makeCube(1.0);
+    const Quaternion q;
+    for (double dx : {0.0, 1e-14, 1e-9, 0.25, 0.5, 1 - 1e-9})
+    {
+        for (double dy : {0.0, 1e-12, 0.3})
+        {
+            const OverlapResult r =
+                polyhedronOverlap(cube.view(), Vec3(0, 0, 0), q, cube.view(), Vec3(dx, dy, 0), q);
+            ASSERT_TRUE(finite(r));
+            const double expected = (1 - dx) * (1 - dy);
+            EXPECT_NEAR(r.volume, expected, 1e-12) << dx << ' ' << dy;
+            EXPECT_NEAR(r.centroid.x, 0.5 * dx, 1e-12);
+            EXPECT_NEAR(r.centroid.y, 0.5 * dy, 1e-12);
+            EXPECT_NEAR(r.centroid.z, 0.0, 1e-12);
+            EXPECT_NEAR(norm(r.normal), 1.0, 1e-12);
+            if (dx > 0 && dy == 0)
+            {
+                EXPECT_NEAR(r.normal.x, 1.0, 1e-12);
+                EXPECT_NEAR(r.contactArea, 1.0, 1e-12); // the 1 x 1 face of B inside A
+            }
+        }
+    }
+    // Exactly face to face, and apart
+    for (double dx : {1.0, 1.0 + 1e-15, 2.0})
+    {
+        const OverlapResult r =
+            polyhedronOverlap(cube.view(), Vec3(0, 0, 0), q, cube.view(), Vec3(dx, 0.3, 0.1), q);
+        ASSERT_TRUE(finite(r));
+        EXPECT_FALSE(r.touching);
+        EXPECT_EQ(r.volume, 0.0);
+    }
+}
+
+
+// Coincident edges and vertices: a cube turned by 45 degrees pushing its edge
+// into another cube's face (top and bottom faces coplanar), vertex on vertex
+TEST(polyhedraOverlap, coincidentEdgesAndVertices)
+{
+    const ConvexShape cube = makeCube(1.0);
+    const Quaternion q45 = fromAxisAngle(Vec3(0, 0, 1), 0.25 * pi);
+    const double halfDiagonal = std::sqrt(0.5);
+    double previous = -1;
+    for (int k = -3; k <= 40; ++k)
+    {
+        const double depth = 1e-3 * k; // of the edge past A's face x = 0.5
+        const Vec3 pos(0.5 + halfDiagonal - depth, 0, 0);
+        const OverlapResult r = polyhedronOverlap(cube.view(), Vec3(), Quaternion(), cube.view(),
+                                                  pos, q45);
+        ASSERT_TRUE(finite(r));
+        const double expected = depth > 0 ? depth * depth : 0.0; // wedge: base 2d, height d, length 1
+        EXPECT_NEAR(r.volume, expected, 1e-12 + 1e-10 * expected) << depth;
+        EXPECT_EQ(r.touching, depth > 0);
+        if (depth > 0)
+        {
+            EXPECT_NEAR(r.normal.x, 1.0, 1e-10);
+            EXPECT_NEAR(r.contactArea, 2 * depth, 1e-10);
+            EXPECT_NEAR(r.centroid.x, 0.5 - depth / 3, 1e-10);
+            EXPECT_GE(r.volume, previous); // continuous and monotone
+        }
+        previous = r.volume;
+    }
+    // Vertex exactly on vertex (both cubes axis aligned, diagonal neighbours)
+    const OverlapResult rv = polyhedronOverlap(cube.view(), Vec3(), Quaternion(), cube.view(),
+                                               Vec3(1, 1, 1), Quaternion());
+    ASSERT_TRUE(finite(rv));
+    EXPECT_FALSE(rv.touching);
+    // Edge exactly on edge
+    const OverlapResult re = polyhedronOverlap(cube.view(), Vec3(), Quaternion(), cube.view(),
+                                               Vec3(1, 1, 0.3), Quaternion());
+    ASSERT_TRUE(finite(re));
+    EXPECT_FALSE(re.touching);
+    // Vertex of a turned cube exactly on a face, then slightly in
+    const Quaternion qv = normalised(fromAxisAngle(Vec3(1, 1, 0), std::atan(std::sqrt(2.0))));
+    const double tip = 0.5 * std::sqrt(3.0);
+    for (double depth : {0.0, 1e-6, 1e-3})
+    {
+        const OverlapResult r = polyhedronOverlap(cube.view(), Vec3(), Quaternion(), cube.view(),
+                                                  Vec3(0, 0, 0.5 + tip - depth), qv);
+        ASSERT_TRUE(finite(r));
+        // A corner of a cube cut at depth d along its diagonal: V = sqrt(3)/2 d^3
+        const double expected = 0.5 * std::sqrt(3.0) * depth * depth * depth;
+        EXPECT_NEAR(r.volume, expected, 1e-12 * (1 + expected));
+        if (depth >= 1e-3)
+        {
+            EXPECT_NEAR(r.normal.z, 1.0, 1e-9);
+        }
+    }
+}
+
+
+// Feng's normal is continuous when the contact switches between edge-edge
+// and vertex-face: sweep a rock past another and watch n and V
+TEST(polyhedraOverlap, continuityAlongSweep)
+{
+    const ConvexShape A = makeRock(1.0, 0.8, 0.7, 20, 11);
+    const ConvexShape B = makeRock(1.0, 0.6, 0.8, 16, 12);
+    std::mt19937_64 rng(5);
+    for (int trial = 0; trial < 5; ++trial)
+    {
+        const Quaternion qa = randomRotation(rng), qb = randomRotation(rng);
+        const Vec3 dir = randomDirection(rng);
+        const Vec3 side = cross(dir, randomDirection(rng));
+        const double reach = A.boundingRadius + B.boundingRadius;
+        const int n = 2000;
+        OverlapResult prev;
+        for (int k = 0; k <= n; ++k)
+        {
+            const double s = reach * (1.0 - 0.5 * k / n);
+            const Vec3 pos = s * dir + (0.1 * std::sin(0.01 * k)) * side;
+            const OverlapResult r = polyhedronOverlap(A.view(), Vec3(), qa, B.view(), pos, qb);
+            ASSERT_TRUE(finite(r));
+            if (prev.touching && r.touching)
+            {
+                const double step = reach * 0.5 / n;
+                EXPECT_LT(std::fabs(r.volume - prev.volume), 2.0 * r.contactArea * step + 1e-15);
+                EXPECT_GT(dot(r.normal, prev.normal), 0.9);
+            }
+            prev = r;
+        }
+    }
+}
+
+
+TEST(polyhedraOverlap, cubeOnPlane)
+{
+    const ConvexShape cube = makeCube(1.0);
+    const Vec3 up(0, 0, 1);
+    // Exactly touching: nothing
+    OverlapResult r = polyhedronPlaneOverlap(cube.view(), Vec3(0.2, 0.3, 0.5), Quaternion(),
+                                             Vec3(0, 0, 0), up);
+    ASSERT_TRUE(finite(r));
+    EXPECT_FALSE(r.touching);
+    for (double depth : {1e-9, 1e-3, 0.2, 0.7})
+    {
+        r = polyhedronPlaneOverlap(cube.view(), Vec3(0.2, 0.3, 0.5 - depth), Quaternion(),
+                                   Vec3(5, -3, 0), up);
+        ASSERT_TRUE(finite(r));
+        EXPECT_TRUE(r.touching);
+        EXPECT_NEAR(r.volume, depth, 1e-12);
+        EXPECT_NEAR(r.centroid.x, 0.2, 1e-12);
+        EXPECT_NEAR(r.centroid.y, 0.3, 1e-12);
+        EXPECT_NEAR(r.centroid.z, -0.5 * depth, 1e-12);
+        EXPECT_NEAR(r.normal.z, 1.0, 1e-12);
+        EXPECT_NEAR(r.contactArea, 1.0, 1e-12);
+    }
+    // Tilted plane, turned cube: compare with the exact reference via a big box
+    std::mt19937_64 rng(9);
+    const ConvexShape rock = makeRock(1.0, 0.7, 0.5, 22, 8);
+    for (int k = 0; k < 50; ++k)
+    {
+        const Vec3 n = randomDirection(rng);
+        const Quaternion q = randomRotation(rng);
+        const Vec3 pos = (0.6 * rock.boundingRadius) * n + Vec3(0.1, 0.2, 0.3);
+        const Vec3 p0(0.1, 0.2, 0.3);
+        r = polyhedronPlaneOverlap(rock.view(), pos, q, p0, n);
+        // Reference: the half-space as a large cube sharing the plane
+        const ConvexShape big = makeCube(20.0);
+        Vec3 e1, e2;
+        const Vec3 a = std::fabs(n.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+        e1 = cross(a, n) / norm(cross(a, n));
+        e2 = cross(n, e1);
+        Matrix3 R;
+        for (int i = 0; i < 3; ++i)
+        {
+            R.m[i][0] = e1[i];
+            R.m[i][1] = e2[i];
+            R.m[i][2] = n[i];
+        }
+        const test::ExactOverlap ref = test::exactOverlap(
+            worldVertices(big, p0 - 10.0 * n, quaternionOfRotation(R)), worldVertices(rock, pos, q));
+        ASSERT_TRUE(r.touching);
+        EXPECT_NEAR(r.volume, ref.volume, 1e-9 * ref.volume);
+        EXPECT_LT(norm(r.centroid - ref.centroid), 1e-9);
+        EXPECT_NEAR(dot(r.normal, n), 1.0, 1e-9);
+    }
+}
+
+
+// A flat wall split into triangles gives what the plane gives
+TEST(polyhedraOverlap, trianglesTileThePlane)
+{
+    const ConvexShape rock = makeRock(1.0, 0.8, 0.6, 20, 21);
+    std::mt19937_64 rng(13);
+    // A 4 x 4 square (z = 0) in 2 x 2 x 2 triangles, counter-clockwise seen from +z
+    std::vector<std::array<Vec3, 3>> tris;
+    for (int i = 0; i < 2; ++i)
+    {
+        for (int j = 0; j < 2; ++j)
+        {
+            const Vec3 a(-2 + 2 * i, -2 + 2 * j, 0), b = a + Vec3(2, 0, 0), c = a + Vec3(2, 2, 0),
+                       d = a + Vec3(0, 2, 0);
+            tris.push_back({a, b, c});
+            tris.push_back({a, c, d});
+        }
+    }
+    for (int k = 0; k < 50; ++k)
+    {
+        const Quaternion q = randomRotation(rng);
+        const Vec3 pos(0.5 * (2 * (rng() % 1000) / 1000.0 - 1), 0.3, 0.3 * rock.boundingRadius);
+        const OverlapResult plane =
+            polyhedronPlaneOverlap(rock.view(), pos, q, Vec3(0, 0, 0), Vec3(0, 0, 1));
+        double volume = 0;
+        Vec3 moment, area;
+        for (const auto& t : tris)
+        {
+            const OverlapResult r = polyhedronTriangleOverlap(rock.view(), pos, q, t[0], t[1], t[2]);
+            ASSERT_TRUE(finite(r));
+            if (r.touching)
+            {
+                volume += r.volume;
+                moment += r.volume * r.centroid;
+                area += r.areaVector;
+            }
+        }
+        ASSERT_TRUE(plane.touching);
+        EXPECT_NEAR(volume, plane.volume, 1e-12);
+        EXPECT_LT(norm(moment / volume - plane.centroid), 1e-12);
+        EXPECT_LT(norm(area - plane.areaVector), 1e-12);
+    }
+}
+
+
+TEST(polyhedraOverlap, sphereAgainstPolyhedron)
+{
+    const ConvexShape cube = makeCube(1.0);
+    const double R = 0.3;
+    // Face contact: exact cap
+    for (double depth : {0.0, 1e-6, 0.05, 0.2})
+    {
+        const OverlapResult r = polyhedronSphereOverlap(cube.view(), Vec3(), Quaternion(),
+                                                        Vec3(0.1, 0.2, 0.5 + R - depth), R);
+        ASSERT_TRUE(finite(r));
+        const double expected = pi * depth * depth * (3 * R - depth) / 3;
+        EXPECT_NEAR(r.volume, expected, 1e-14);
+        EXPECT_EQ(r.touching, depth > 0);
+        if (depth > 0)
+        {
+            EXPECT_NEAR(r.normal.z, 1.0, 1e-14);
+            EXPECT_LT(r.centroid.z, 0.5);
+            EXPECT_GT(r.centroid.z, 0.5 - depth);
+        }
+    }
+    // Edge and vertex contacts: normal along the closest-point direction
+    const Vec3 edgeDir = Vec3(1, 1, 0) / std::sqrt(2.0);
+    const OverlapResult re = polyhedronSphereOverlap(
+        cube.view(), Vec3(), Quaternion(), Vec3(0.5, 0.5, 0.1) + (R - 0.01) * edgeDir, R);
+    ASSERT_TRUE(re.touching);
+    EXPECT_LT(norm(re.normal - edgeDir), 1e-12);
+    // Centre inside the cube: leaves through the nearest face
+    const OverlapResult ri =
+        polyhedronSphereOverlap(cube.view(), Vec3(), Quaternion(), Vec3(0.45, 0, 0), R);
+    ASSERT_TRUE(ri.touching);
+    EXPECT_NEAR(ri.normal.x, 1.0, 1e-14);
+    // Far away
+    EXPECT_FALSE(
+        polyhedronSphereOverlap(cube.view(), Vec3(), Quaternion(), Vec3(2, 0, 0), R).touching);
+}
+
+
+TEST(polyhedraOverlap, packedTableMatchesShapes)
+{
+    std::vector<ConvexShape> shapes = {makeCube(1.0), makeRock(1.0, 0.7, 0.7, 30, 5),
+                                       makeDodecahedron(2.0)};
+    const PackedPolyhedra packed = packPolyhedra(shapes);
+    const PolyhedronTable table = packed.table();
+    ASSERT_EQ(table.nShapes, 3);
+    for (int k = 0; k < 3; ++k)
+    {
+        const ConvexPolyhedron v = table.shape(k), w = shapes[k].view();
+        ASSERT_EQ(v.nVertices, w.nVertices);
+        ASSERT_EQ(v.nFaces, w.nFaces);
+        ASSERT_EQ(v.nEdges, w.nEdges);
+        for (int f = 0; f < v.nFaces; ++f)
+        {
+            ASSERT_EQ(v.faceSize(f), w.faceSize(f));
+            for (int i = 0; i < v.faceSize(f); ++i)
+            {
+                EXPECT_EQ(v.faceVertexPoint(f, i).x, w.faceVertexPoint(f, i).x);
+            }
+        }
+        EXPECT_EQ(v.volume, w.volume);
+        EXPECT_EQ(v.boundingRadius, w.boundingRadius);
+    }
+    // Overlap through the table equals overlap through the shapes
+    const OverlapResult a = polyhedronOverlap(table.shape(1), Vec3(), Quaternion(), table.shape(2),
+                                              Vec3(0.9, 0.1, 0), Quaternion());
+    const OverlapResult b = polyhedronOverlap(shapes[1].view(), Vec3(), Quaternion(),
+                                              shapes[2].view(), Vec3(0.9, 0.1, 0), Quaternion());
+    EXPECT_EQ(a.volume, b.volume);
+}
