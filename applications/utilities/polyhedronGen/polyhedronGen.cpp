@@ -42,7 +42,7 @@ const char* usage =
 
 [[noreturn]] void fail(const std::string& message)
 {
-    std::cerr << "polyhedronGen: error: " << message << "\n\n" << usage;
+    std::cerr << "polyhedronGen: error: " << message << "\n(polyhedronGen -help for usage)\n";
     std::exit(1);
 }
 
@@ -139,6 +139,11 @@ int main(int argc, char** argv)
     };
 
     if (!has("-shape") && has("-input")) opt["-shape"] = {"hull"};
+    if (argc == 1)
+    {
+        std::cout << usage;
+        return 1;
+    }
     if (!has("-shape")) fail("option -shape is required");
     if (!has("-o")) fail("option -o <out.stl> is required");
     const std::string kind = opt["-shape"][0];
@@ -209,7 +214,11 @@ int main(int argc, char** argv)
         else if (kind == "hull")
         {
             if (!has("-input")) fail("shape hull: option -input <file.stl|file.obj> is required");
-            shape = buildConvexShape(readPointSet(opt["-input"][0]), "hull", &placement);
+            const std::string input = opt["-input"][0];
+            const std::size_t slash = input.find_last_of('/');
+            const std::string base = input.substr(slash == std::string::npos ? 0 : slash + 1);
+            shape = buildConvexShape(readPointSet(input), base.substr(0, base.rfind('.')),
+                                     &placement);
             havePlacement = true;
             if (has("-d")) scaleToEquivalentDiameter(shape, positive("-d"));
         }

@@ -2,6 +2,7 @@
 // Front ends (demFoam reads constant/demProperties) fill it; System checks it.
 #pragma once
 
+#include "polyDEM/ConvexPolyhedron.hpp"
 #include "polyDEM/TriangleMesh.hpp"
 #include "polyDEM/Vec3.hpp"
 
@@ -14,7 +15,8 @@ namespace polydem
 enum class ContactLaw
 {
     hertzMindlin,        //!< Hertz normal, Mindlin-Deresiewicz (no-slip) tangential
-    linearSpringDashpot  //!< Cundall-Strack linear spring and dashpot
+    linearSpringDashpot, //!< Cundall-Strack linear spring and dashpot
+    overlapVolume        //!< volumetric (Blaze-DEM / Feng): Fn = Kn V n, for polyhedra
 };
 
 enum class RollingModel
@@ -60,8 +62,10 @@ struct ContactModel
     RollingModel rolling = RollingModel::none;
     //- Linear law: normal stiffness [N/m]
     double normalStiffness = 0;
-    //- Linear law: tangential / normal stiffness
+    //- Linear and overlapVolume laws: tangential / normal stiffness
     double tangentialStiffnessRatio = 2.0 / 7.0;
+    //- overlapVolume law: normal force per overlap volume [N/m3]
+    double volumetricStiffness = 0;
 };
 
 struct ParticleType
@@ -71,6 +75,8 @@ struct ParticleType
     int material = 0;
     //- Default sphere radius (insertion may override per particle) [m]
     double radius = 0;
+    //- Polyhedron: index into SimulationConfig::shapes
+    int shapeIndex = -1;
 };
 
 struct WallMotion
@@ -112,6 +118,8 @@ struct SimulationConfig
     std::vector<PairProperties> pairs;
     ContactModel contact;
     std::vector<ParticleType> types;
+    //- Convex shapes of the polyhedral types (body frame, principal axes)
+    std::vector<ConvexShape> shapes;
     std::vector<PlaneWall> planes;
     std::vector<MeshWall> meshes;
     //- Back end by name: "cpu" or "cuda"

@@ -9,6 +9,11 @@
 // Linear spring-dashpot (linearSpringDashpot)
 //     Fn = kn d - 2 zeta sqrt(m* kn) vn,  Ft = -kt xi - 2 zeta sqrt(m* kt) vt, |Ft| <= mu Fn
 //     Cundall & Strack (1979).
+// Overlap volume (overlapVolume), for polyhedra (and spheres among them)
+//     Fn = Kn V - 2 zeta sqrt(m* kn) vn,  kn = Kn A (A: contact area, so dFn/dd = kn)
+//     Ft = -kt xi - 2 zeta sqrt(m* kt) vt,  kt = ratio kn,  |Ft| <= mu Fn
+//     Blaze-DEM (Govender et al. 2016); normal n = S/|S| with S = -dV/dx (Feng 2021).
+//     Against a plane, Kn V n acting at the centroid of V is exactly conservative.
 // Rolling resistance
 //     constantTorque: M = -mu_r R* Fn w_rel/|w_rel|                 (Ai et al. 2011, type A)
 //     elasticPlastic: dM_k = -k_r w_rel dt, k_r = 2.25 kn mu_r^2 R*^2, |M_k| <= mu_r R* Fn,
@@ -40,6 +45,7 @@ struct LawParameters
     ContactLaw law = ContactLaw::hertzMindlin;
     RollingModel rolling = RollingModel::none;
     double normalStiffness = 0;        //!< linear law [N/m]
+    double volumetricStiffness = 0;    //!< overlapVolume law [N/m3]
     double tangentialStiffnessRatio = 2.0 / 7.0;
     double dt = 0;
 };
@@ -48,7 +54,8 @@ struct LawParameters
 struct ContactKinematics
 {
     Vec3 normal;          //!< unit, from body 1 towards body 2
-    double overlap = 0;   //!< > 0 in contact [m]
+    double overlap = 0;   //!< > 0 in contact [m]; overlapVolume: the volume [m3]
+    double contactArea = 0; //!< overlapVolume: |S| [m2]
     double rStar = 0;     //!< effective radius
     double mStar = 0;     //!< effective mass
     double rollingInertia = 0; //!< I_r for the EPSD damping
@@ -94,6 +101,14 @@ PD_HD inline ContactResult evaluateContact
         cn = pc.damping * sqrt(k.mStar * Sn);
         ct = pc.damping * sqrt(k.mStar * St);
     }
+    else if (law.law == ContactLaw::overlapVolume)
+    {
+        kn = law.volumetricStiffness * k.contactArea;
+        kt = law.tangentialStiffnessRatio * kn;
+        fnElastic = law.volumetricStiffness * d;
+        cn = 2.0 * pc.damping * sqrt(k.mStar * kn);
+        ct = 2.0 * pc.damping * sqrt(k.mStar * kt);
+    }
     else
     {
         kn = law.normalStiffness;
@@ -136,7 +151,12 @@ PD_HD inline ContactResult evaluateContact
 
     res.force = -fn * n + ft;
 
-    // Rolling resistance: only the relative rolling (tangential) part of omega
+    // Overlap volume (overlapVolume), for polyhedra (and spheres among them)
+//     Fn = Kn V - 2 zeta sqrt(m* kn) vn,  kn = Kn A (A: contact area, so dFn/dd = kn)
+//     Ft = -kt xi - 2 zeta sqrt(m* kt) vt,  kt = ratio kn,  |Ft| <= mu Fn
+//     Blaze-DEM (Govender et al. 2016); normal n = S/|S| with S = -dV/dx (Feng 2021).
+//     Against a plane, Kn V n acting at the centroid of V is exactly conservative.
+// Rolling resistance: only the relative rolling (tangential) part of omega
     if (law.rolling != RollingModel::none && pc.rollingFriction > 0)
     {
         const Vec3 wr = k.relOmega - dot(k.relOmega, n) * n;

@@ -48,7 +48,8 @@
 // exact for a face contact and an upper bound for edge and vertex contacts.
 //
 // All functions are host+device, allocate nothing, and use fixed stack
-// buffers sized by the caps of ConvexPolyhedron.hpp (about 8 kB per call).
+// buffers sized by the caps of ConvexPolyhedron.hpp (ptxas, sm_90: a kernel
+// calling all four uses a 9.7 kB stack frame per thread, 166 registers).
 #pragma once
 
 #include "polyDEM/ConvexPolyhedron.hpp"
@@ -331,7 +332,8 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     // S = -dV/dx_B; A's part and minus B's part agree on a closed surface
     r.areaVector = 0.25 * (acc.twiceAreaA - acc.twiceAreaB);
     r.contactArea = norm(r.areaVector);
-    if (r.contactArea > 1e-300)
+    // One shape inside the other: S = 0 up to round-off of the whole surface
+    if (r.contactArea > 1e-9 * 0.5 * acc.twiceSurface)
     {
         r.normal = r.areaVector / r.contactArea;
     }
@@ -626,9 +628,9 @@ inline PD_HD OverlapResult polyhedronSphereOverlap(const ConvexPolyhedron& P, co
     depth = depth < 2.0 * radius ? depth : 2.0 * radius;
     const double pi = 3.14159265358979323846;
     res.volume = pi * depth * depth * (3.0 * radius - depth) / 3.0;
-    if (!(res.volume > kOverlapTouchingVolume * (P.volume < 4.19 * radius * radius * radius
-                                                     ? P.volume
-                                                     : 4.19 * radius * radius * radius)))
+    const double sphereVolume = 4.0 / 3.0 * pi * radius * radius * radius;
+    const double minVolume = P.volume < sphereVolume ? P.volume : sphereVolume;
+    if (!(res.volume > kOverlapTouchingVolume * minVolume))
     {
         return OverlapResult();
     }

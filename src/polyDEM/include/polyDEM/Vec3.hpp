@@ -12,7 +12,7 @@ struct Vec3
 {
     double x = 0, y = 0, z = 0;
 
-    PD_INLINE Vec3() = default;
+    Vec3() = default;
     PD_INLINE Vec3(double a, double b, double c) : x(a), y(b), z(c) {}
 
     PD_INLINE double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }

@@ -16,6 +16,7 @@
 #include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Engine.hpp"
 #include "polyDEM/Error.hpp"
+#include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/RestitutionCalibration.hpp"
 
 #include "DeviceGeometry.hpp"
@@ -139,6 +140,8 @@ struct LawView
     const PairCoefficients* pairs;
     int nMaterials;
     const int* typeMaterial;
+    const int* typeShape;       //!< -1: sphere, else index into shapes
+    PolyhedronTable shapes;     //!< device copies of the convex shapes
 
     PD_HD const PairCoefficients& pair(int ma, int mb) const
     {
@@ -400,6 +403,56 @@ struct TransferPairHistory
 // Forces
 // ---------------------------------------------------------------------------
 
+//- Overlap of two spheres as the volumetric law sees it: lens volume, area of
+//  the intersection disc, lens centroid (on the line of centres); n from a to b
+PD_HD inline OverlapResult sphereSphereOverlap
+(
+    const Vec3& xa, double ra, const Vec3& xb, double rb
+)
+{
+    OverlapResult res;
+    const Vec3 d = xb - xa;
+    const double dist = norm(d);
+    const double h = ra + rb - dist;
+    if (h <= 0 || dist <= 0) return res;
+    const double pi = 3.14159265358979323846;
+    res.touching = true;
+    res.normal = d / dist;
+    // Distance from a's centre to the plane of the intersection circle
+    const double xPlane = (dist * dist - rb * rb + ra * ra) / (2 * dist);
+    const double ha = ra - xPlane, hb = rb - (dist - xPlane);  // cap heights
+    const double va = pi * ha * ha * (3 * ra - ha) / 3, vb = pi * hb * hb * (3 * rb - hb) / 3;
+    res.volume = va + vb;
+    const double a2 = ra * ra - xPlane * xPlane;
+    res.contactArea = pi * (a2 > 0 ? a2 : 0);
+    // Cap centroids measured from their sphere centres
+    const double za = 3 * (2 * ra - ha) * (2 * ra - ha) / (4 * (3 * ra - ha));
+    const double zb = 3 * (2 * rb - hb) * (2 * rb - hb) / (4 * (3 * rb - hb));
+    const double s = res.volume > 0 ? (va * za + vb * (dist - zb)) / res.volume : xPlane;
+    res.centroid = xa + s * res.normal;
+    res.areaVector = res.contactArea * res.normal;
+    return res;
+}
+
+//- A sphere against the half-space behind a plane (normal n out of the wall):
+//  cap volume, section area, cap centroid; result normal from the wall to the sphere
+PD_HD inline OverlapResult sphereHalfSpaceOverlap(const Vec3& x, double r, const Vec3& foot, const Vec3& n)
+{
+    OverlapResult res;
+    const double h = r - dot(x - foot, n);
+    if (h <= 0) return res;
+    const double hh = h < 2 * r ? h : 2 * r;
+    const double pi = 3.14159265358979323846;
+    res.touching = true;
+    res.normal = n;
+    res.volume = pi * hh * hh * (3 * r - hh) / 3;
+    res.contactArea = pi * hh * (2 * r - hh);
+    const double z = 3 * (2 * r - hh) * (2 * r - hh) / (4 * (3 * r - hh));
+    res.centroid = x - z * n;
+    res.areaVector = res.contactArea * n;
+    return res;
+}
+
 struct ForceKernel
 {
     ParticleView p;
@@ -457,6 +510,55 @@ struct ForceKernel
         T += cross(arm, res.force) + res.rollingTorque;
     }
 
+    //- Volumetric contact of particle i with a wall. ov.normal points from the
+    //  wall into the particle; ov.centroid is the contact point.
+    PD_HD void wallContactVolumetric
+    (
+        int i, int material, const OverlapResult& ov, const Vec3& wallVel, const Vec3& wallOmega,
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
+    ) const
+    {
+        const Vec3 x = p.pos[i];
+        ContactKinematics k;
+        k.normal = -ov.normal;
+        k.overlap = ov.volume;
+        k.contactArea = ov.contactArea;
+        k.rStar = p.radius[i];
+        k.mStar = p.mass[i];
+        k.rollingInertia = rollingInertiaOf(p.inertia[i].x, p.mass[i], p.radius[i]);
+        const Vec3 arm = ov.centroid - x;
+        k.relVelocity = p.vel[i] + cross(p.omega[i], arm) - wallVel;
+        k.relOmega = p.omega[i] - wallOmega;
+        const int mp = law.typeMaterial[p.type[i]];
+        const ContactResult res = evaluateContact(law.law, law.pair(mp, material), k, xi, mr);
+        F += res.force;
+        T += cross(arm, res.force) + res.rollingTorque;
+    }
+
+    //- Volumetric overlap of particles a and b, normal from a to b
+    PD_HD OverlapResult pairOverlap(int a, int b) const
+    {
+        const int sa = law.typeShape[p.type[a]];
+        const int sb = law.typeShape[p.type[b]];
+        if (sa < 0 && sb < 0)
+        {
+            return sphereSphereOverlap(p.pos[a], p.radius[a], p.pos[b], p.radius[b]);
+        }
+        if (sa >= 0 && sb >= 0)
+        {
+            return polyhedronOverlap(law.shapes.shape(sa), p.pos[a], p.q[a],
+                                     law.shapes.shape(sb), p.pos[b], p.q[b]);
+        }
+        if (sa >= 0)
+        {
+            return polyhedronSphereOverlap(law.shapes.shape(sa), p.pos[a], p.q[a], p.pos[b], p.radius[b]);
+        }
+        OverlapResult r = polyhedronSphereOverlap(law.shapes.shape(sb), p.pos[b], p.q[b], p.pos[a], p.radius[a]);
+        r.normal = -r.normal;
+        r.areaVector = -r.areaVector;
+        return r;
+    }
+
     PD_HD void operator()(int i) const
     {
         const double m = p.mass[i];
@@ -480,6 +582,48 @@ struct ForceKernel
             const bool iFirst = idi < p.id[j];
             const int a = iFirst ? i : j;
             const int b = iFirst ? j : i;
+            if (law.law.law == ContactLaw::overlapVolume)
+            {
+                // Bounding spheres first: the exact overlap is the costly part
+                const double reach = p.radius[a] + p.radius[b];
+                const OverlapResult ov = normSqr(p.pos[b] - p.pos[a]) < reach * reach
+                                       ? pairOverlap(a, b) : OverlapResult();
+                if (!ov.touching)
+                {
+                    pairXi[s] = Vec3();
+                    pairMr[s] = Vec3();
+                    continue;
+                }
+                ++touching;
+                ContactKinematics kin;
+                kin.normal = ov.normal;
+                kin.overlap = ov.volume;
+                kin.contactArea = ov.contactArea;
+                const double ra = p.radius[a], rb = p.radius[b];
+                kin.rStar = ra * rb / (ra + rb);
+                const double ma = p.mass[a], mb = p.mass[b];
+                kin.mStar = ma * mb / (ma + mb);
+                const double Ia = rollingInertiaOf(p.inertia[a].x, ma, ra);
+                const double Ib = rollingInertiaOf(p.inertia[b].x, mb, rb);
+                kin.rollingInertia = Ia * Ib / (Ia + Ib);
+                const Vec3 armA = ov.centroid - p.pos[a];
+                const Vec3 armB = ov.centroid - p.pos[b];
+                kin.relVelocity = (p.vel[a] + cross(p.omega[a], armA)) - (p.vel[b] + cross(p.omega[b], armB));
+                kin.relOmega = p.omega[a] - p.omega[b];
+                const ContactResult res = evaluateContact(law.law, law.pair(law.typeMaterial[p.type[a]],
+                                                          law.typeMaterial[p.type[b]]), kin, pairXi[s], pairMr[s]);
+                if (iFirst)
+                {
+                    F += res.force;
+                    T += cross(armA, res.force) + res.rollingTorque;
+                }
+                else
+                {
+                    F -= res.force;
+                    T += cross(armB, -res.force) - res.rollingTorque;
+                }
+                continue;
+            }
             const Vec3 d = p.pos[b] - p.pos[a];
             const double dist = norm(d);
             const double ra = p.radius[a], rb = p.radius[b];
@@ -539,8 +683,25 @@ struct ForceKernel
                 planeMr[s] = Vec3();
                 continue;
             }
-            ++walls;
             const Vec3 foot = xi_ - h * n;
+            if (law.law.law == ContactLaw::overlapVolume)
+            {
+                const int sh = law.typeShape[p.type[i]];
+                const OverlapResult ov = sh >= 0
+                    ? polyhedronPlaneOverlap(law.shapes.shape(sh), xi_, p.q[i], p0, n)
+                    : sphereHalfSpaceOverlap(xi_, ri, foot, n);
+                if (!ov.touching)
+                {
+                    planeXi[s] = Vec3();
+                    planeMr[s] = Vec3();
+                    continue;
+                }
+                ++walls;
+                wallContactVolumetric(i, pl.material, ov, pl.motion.velocityAt(ov.centroid),
+                                      pl.motion.angularVelocity(), planeXi[s], planeMr[s], F, T);
+                continue;
+            }
+            ++walls;
             wallContact(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
                         planeXi[s], planeMr[s], F, T);
         }
@@ -561,6 +722,45 @@ struct ForceKernel
                 const int cx = int(floor(g.x)), cy = int(floor(g.y)), cz = int(floor(g.z));
                 if (cx < 0 || cy < 0 || cz < 0 || cx >= mesh.nx || cy >= mesh.ny || cz >= mesh.nz) continue;
                 const int cell = mesh.firstCell + (cz * mesh.ny + cy) * mesh.nx + cx;
+
+                const int shapeI = law.typeShape[p.type[i]];
+                if (law.law.law == ContactLaw::overlapVolume && shapeI >= 0)
+                {
+                    // Polyhedron: every triangle's prism adds its own overlap
+                    // (coplanar neighbours partition the wall, so nothing is counted twice)
+                    const ConvexPolyhedron P = law.shapes.shape(shapeI);
+                    const Quaternion qBody = conjugate(R) * p.q[i];
+                    for (int t = cellStart[cell]; t < cellStart[cell + 1] && nNext < maxMeshSlots; ++t)
+                    {
+                        const int tri = cellTriangles[t];
+                        const int g0 = mesh.firstTriangle + tri;
+                        const OverlapResult ovBody = polyhedronTriangleOverlap(P, y, qBody, triA[g0], triB[g0], triC[g0]);
+                        if (!ovBody.touching) continue;
+                        OverlapResult ov = ovBody;
+                        ov.normal = mesh.motion.directionToWorld(ovBody.normal, R);
+                        ov.centroid = mesh.motion.toWorld(ovBody.centroid, time, R);
+                        Vec3 sxi, smr;
+                        for (int s2 = 0; s2 < maxMeshSlots; ++s2)
+                        {
+                            if (slots[s2].mesh == w && slots[s2].triangle == tri)
+                            {
+                                sxi = slots[s2].xi;
+                                smr = slots[s2].mr;
+                                break;
+                            }
+                        }
+                        ++walls;
+                        wallContactVolumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
+                                              mesh.motion.angularVelocity(), sxi, smr, F, T);
+                        MeshSlot& ns = next[nNext++];
+                        ns.mesh = w;
+                        ns.triangle = tri;
+                        ns.normal = -ov.normal;
+                        ns.xi = sxi;
+                        ns.mr = smr;
+                    }
+                    continue;
+                }
 
                 // Candidates: every triangle within reach
                 Vec3 cPoint[maxMeshCandidates];
@@ -644,8 +844,19 @@ struct ForceKernel
                     }
                     const Vec3 wallPoint = mesh.motion.toWorld(cPoint[c], time, R);
                     ++walls;
-                    wallContact(i, mesh.material, wallPoint, mesh.motion.velocityAt(wallPoint),
-                                mesh.motion.angularVelocity(), sxi, smr, F, T);
+                    if (law.law.law == ContactLaw::overlapVolume)
+                    {
+                        // A sphere under the volumetric law: the cap cut by the
+                        // tangent plane at the closest point
+                        const OverlapResult ov = sphereHalfSpaceOverlap(xi_, ri, wallPoint, -nWorld);
+                        wallContactVolumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
+                                              mesh.motion.angularVelocity(), sxi, smr, F, T);
+                    }
+                    else
+                    {
+                        wallContact(i, mesh.material, wallPoint, mesh.motion.velocityAt(wallPoint),
+                                    mesh.motion.angularVelocity(), sxi, smr, F, T);
+                    }
                     MeshSlot& ns = next[nNext++];
                     ns.mesh = w;
                     ns.triangle = cTri[c];
@@ -914,7 +1125,8 @@ private:
 
     LawView lawView() const
     {
-        return LawView{law_, ptr(pairCoeffs_), int(config_.materials.size()), ptr(typeMaterial_)};
+        return LawView{law_, ptr(pairCoeffs_), int(config_.materials.size()), ptr(typeMaterial_),
+                       ptr(typeShape_), shapeTable_};
     }
 
     void setupLaw()
@@ -925,6 +1137,7 @@ private:
         law_.rolling = config_.contact.rolling;
         law_.normalStiffness = config_.contact.normalStiffness;
         law_.tangentialStiffnessRatio = config_.contact.tangentialStiffnessRatio;
+        law_.volumetricStiffness = config_.contact.volumetricStiffness;
         law_.dt = config_.timeStep;
 
         const int nm = int(config_.materials.size());
@@ -954,9 +1167,52 @@ private:
             }
         }
         toDevice(pairCoeffs_, pc);
-        std::vector<int> tm;
-        for (const auto& t : config_.types) tm.push_back(t.material);
+        std::vector<int> tm, ts;
+        for (const auto& t : config_.types)
+        {
+            tm.push_back(t.material);
+            ts.push_back(t.shape == ShapeKind::polyhedron ? t.shapeIndex : -1);
+        }
         toDevice(typeMaterial_, tm);
+        toDevice(typeShape_, ts);
+        uploadShapes();
+    }
+
+    //- The convex shapes live on the device once; particles only index them
+    void uploadShapes()
+    {
+        const PackedPolyhedra packed = packPolyhedra(config_.shapes);
+        toDevice(shapeVertexBegin_, packed.vertexBegin);
+        toDevice(shapeFaceBegin_, packed.faceBegin);
+        toDevice(shapeFaceStartBegin_, packed.faceStartBegin);
+        toDevice(shapeFaceVertexBegin_, packed.faceVertexBegin);
+        toDevice(shapeEdgeBegin_, packed.edgeBegin);
+        toDevice(shapeBoundingRadius_, packed.boundingRadius);
+        toDevice(shapeVolume_, packed.volume);
+        toDevice(shapeInertia_, packed.inertiaPerDensity);
+        toDevice(shapeVertices_, packed.vertices);
+        toDevice(shapeFaceNormals_, packed.faceNormals);
+        toDevice(shapeFaceOffsets_, packed.faceOffsets);
+        toDevice(shapeFaceStart_, packed.faceStart);
+        toDevice(shapeFaceVertex_, packed.faceVertex);
+        toDevice(shapeEdges_, packed.edges);
+        PolyhedronTable& t = shapeTable_;
+        t.nShapes = packed.nShapes();
+        auto p0 = [](auto& v) { return v.empty() ? nullptr : ptr(v); };
+        t.vertexBegin = p0(shapeVertexBegin_);
+        t.faceBegin = p0(shapeFaceBegin_);
+        t.faceStartBegin = p0(shapeFaceStartBegin_);
+        t.faceVertexBegin = p0(shapeFaceVertexBegin_);
+        t.edgeBegin = p0(shapeEdgeBegin_);
+        t.boundingRadius = p0(shapeBoundingRadius_);
+        t.volume = p0(shapeVolume_);
+        t.inertiaPerDensity = p0(shapeInertia_);
+        t.vertices = p0(shapeVertices_);
+        t.faceNormals = p0(shapeFaceNormals_);
+        t.faceOffsets = p0(shapeFaceOffsets_);
+        t.faceStart = p0(shapeFaceStart_);
+        t.faceVertex = p0(shapeFaceVertex_);
+        t.edges = p0(shapeEdges_);
     }
 
     static RigidMotion motionOf(const WallMotion& m)
@@ -1366,9 +1622,17 @@ private:
         const auto cnt = toHost(nbrCount_);
         const auto nb = toHost(nbr_);
         const auto type = toHost(type_);
+        const auto q = toHost(q_);
         const auto pc = toHost(pairCoeffs_);
         const int nm = int(config_.materials.size());
         auto coeff = [&](int ma, int mb) { return pc[ma * nm + mb]; };
+        const bool volumetric = law_.law == ContactLaw::overlapVolume;
+        const PackedPolyhedra packed = packPolyhedra(config_.shapes);
+        const PolyhedronTable table = packed.table();
+        auto shapeOf = [&](int i) {
+            const ParticleType& t = config_.types[type[i]];
+            return t.shape == ShapeKind::polyhedron ? t.shapeIndex : -1;
+        };
         double e = 0;
         const int n = int(ids.size());
         for (int i = 0; i < n; ++i)
@@ -1378,9 +1642,25 @@ private:
             {
                 const int j = nb[size_t(i) * maxNbr_ + k];
                 if (ids[i] > ids[j]) continue;
+                const int mj = config_.types[type[j]].material;
+                if (volumetric)
+                {
+                    // Exact for flat (face-face) contacts, V = A d: W = Kn V^2 / (2 A)
+                    const int si = shapeOf(i), sj = shapeOf(j);
+                    OverlapResult ov;
+                    if (si < 0 && sj < 0) ov = sphereSphereOverlap(pos[i], rad[i], pos[j], rad[j]);
+                    else if (si >= 0 && sj >= 0)
+                        ov = polyhedronOverlap(table.shape(si), pos[i], q[i], table.shape(sj), pos[j], q[j]);
+                    else if (si >= 0) ov = polyhedronSphereOverlap(table.shape(si), pos[i], q[i], pos[j], rad[j]);
+                    else ov = polyhedronSphereOverlap(table.shape(sj), pos[j], q[j], pos[i], rad[i]);
+                    if (ov.touching && ov.contactArea > 0)
+                    {
+                        e += 0.5 * law_.volumetricStiffness * ov.volume * ov.volume / ov.contactArea;
+                    }
+                    continue;
+                }
                 const double d = rad[i] + rad[j] - norm(pos[j] - pos[i]);
                 if (d <= 0) continue;
-                const int mj = config_.types[type[j]].material;
                 e += normalElasticEnergy(law_, coeff(mi, mj), rad[i] * rad[j] / (rad[i] + rad[j]), d);
             }
             for (const auto& w : config_.planes)
@@ -1388,11 +1668,23 @@ private:
                 detail::RigidMotion m = motionOf(w.motion);
                 const Quaternion R = m.rotationAt(time_);
                 const Vec3 nrm = m.directionToWorld(w.normal, R);
-                const double h = dot(pos[i] - m.toWorld(w.point, time_, R), nrm);
-                if (h < rad[i])
+                const Vec3 p0 = m.toWorld(w.point, time_, R);
+                const double h = dot(pos[i] - p0, nrm);
+                if (h >= rad[i]) continue;
+                if (volumetric)
                 {
-                    e += normalElasticEnergy(law_, coeff(mi, w.material), rad[i], rad[i] - h);
+                    // Exact: Kn times the first moment of the overlap about the plane
+                    const int si = shapeOf(i);
+                    const OverlapResult ov = si >= 0
+                        ? polyhedronPlaneOverlap(table.shape(si), pos[i], q[i], p0, nrm)
+                        : sphereHalfSpaceOverlap(pos[i], rad[i], pos[i] - h * nrm, nrm);
+                    if (ov.touching)
+                    {
+                        e += law_.volumetricStiffness * ov.volume * dot(p0 - ov.centroid, nrm);
+                    }
+                    continue;
                 }
+                e += normalElasticEnergy(law_, coeff(mi, w.material), rad[i], rad[i] - h);
             }
         }
         return e;
@@ -1413,7 +1705,14 @@ private:
     dvec<Quaternion> q_;
 
     dvec<PairCoefficients> pairCoeffs_;
-    dvec<int> typeMaterial_;
+    dvec<int> typeMaterial_, typeShape_;
+
+    dvec<int> shapeVertexBegin_, shapeFaceBegin_, shapeFaceStartBegin_, shapeFaceVertexBegin_, shapeEdgeBegin_;
+    dvec<double> shapeBoundingRadius_, shapeVolume_, shapeFaceOffsets_;
+    dvec<Vec3> shapeInertia_, shapeVertices_, shapeFaceNormals_;
+    dvec<int> shapeFaceStart_, shapeFaceVertex_;
+    dvec<PolyhedronEdge> shapeEdges_;
+    PolyhedronTable shapeTable_;
 
     int maxNbr_ = 0;
     dvec<int> nbrCount_, nbr_, contactCount_, wallContactCount_;

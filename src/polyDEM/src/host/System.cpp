@@ -38,6 +38,22 @@ std::string thisLibraryFolder()
     return ".";
 }
 
+double largestFaceArea(const ConvexShape& s)
+{
+    double best = 0;
+    for (int f = 0; f < s.nFaces(); ++f)
+    {
+        Vec3 a;
+        const int b = s.faceStart[f], e = s.faceStart[f + 1];
+        for (int k = b; k < e; ++k)
+        {
+            a += cross(s.vertices[s.faceVertex[k]], s.vertices[s.faceVertex[k + 1 < e ? k + 1 : b]]);
+        }
+        best = std::max(best, 0.5 * norm(a));
+    }
+    return best;
+}
+
 } // namespace
 
 
@@ -76,6 +92,11 @@ void System::checkConfig(const SimulationConfig& c)
     {
         throw Error("linearSpringDashpot needs a positive normal stiffness [N/m]", f, "contactModel/normalStiffness");
     }
+    if (c.contact.law == ContactLaw::overlapVolume && !(c.contact.volumetricStiffness > 0))
+    {
+        throw Error("overlapVolume needs a positive volumetric stiffness [N/m3]", f,
+                    "contactModel/volumetricStiffness");
+    }
     if (c.types.empty())
     {
         throw Error("at least one particle type is needed", f, "particleTypes");
@@ -86,6 +107,14 @@ void System::checkConfig(const SimulationConfig& c)
             throw Error("unknown material", f, "particleTypes/" + t.name + "/material");
         if (t.shape == ShapeKind::sphere && !(t.radius > 0))
             throw Error("sphere radius must be positive", f, "particleTypes/" + t.name + "/diameter");
+        if (t.shape == ShapeKind::polyhedron)
+        {
+            if (t.shapeIndex < 0 || t.shapeIndex >= int(c.shapes.size()))
+                throw Error("polyhedral type without a shape", f, "particleTypes/" + t.name + "/shape");
+            if (c.contact.law != ContactLaw::overlapVolume)
+                throw Error("polyhedral particles need the overlapVolume contact law", f, "contactModel/law");
+            c.shapes[t.shapeIndex].check();
+        }
     }
     for (const auto& w : c.planes)
     {
@@ -163,8 +192,15 @@ void System::completeSphereProperties(ParticleState& p) const
     {
         if (p.mass[i] > 0) continue;
         const auto& type = config_.types[p.type[i]];
-        if (type.shape != ShapeKind::sphere) continue;
         const double rho = config_.materials[type.material].density;
+        if (type.shape == ShapeKind::polyhedron)
+        {
+            const ConvexShape& shape = config_.shapes[type.shapeIndex];
+            p.mass[i] = rho * shape.volume;
+            p.inertia[i] = rho * shape.inertiaPerDensity;
+            p.radius[i] = shape.boundingRadius;
+            continue;
+        }
         const double r = p.radius[i];
         p.mass[i] = rho * 4.0 / 3.0 * M_PI * r * r * r;
         const double I = 0.4 * p.mass[i] * r * r;
@@ -216,9 +252,20 @@ double System::criticalTimeStep(const ParticleState& p) const
         else
         {
             // Undamped contact duration of two equal particles: pi sqrt(m*/k);
-            // resolve it with at least 10 steps.
+            // resolve it with at least 10 steps. Volumetric law: k = Kn A with
+            // A the largest contact area (largest face, or the sphere's section).
+            double k = config_.contact.normalStiffness;
+            if (config_.contact.law == ContactLaw::overlapVolume)
+            {
+                double area = M_PI * r * r;
+                if (type.shape == ShapeKind::polyhedron)
+                {
+                    area = largestFaceArea(config_.shapes[type.shapeIndex]);
+                }
+                k = config_.contact.volumetricStiffness * area;
+            }
             const double mStar = 0.5 * p.mass[i];
-            const double tc = M_PI * std::sqrt(mStar / config_.contact.normalStiffness);
+            const double tc = M_PI * std::sqrt(mStar / k);
             limit = std::min(limit, tc / 10);
         }
     }

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -114,11 +115,15 @@ TEST(polyhedraOverlap, randomRocksAgainstExactIntersection)
         EXPECT_LT(volumeError, 1e-9) << "pair " << pairs;
         EXPECT_LT(centroidError, 1e-9) << "pair " << pairs;
 
-        // Swapping A and B: same volume, opposite normal
+        // Swapping A and B: same volume, opposite normal (unless one shape is
+        // inside the other, where S = 0 and the normal is the centre line)
         const OverlapResult rs =
             polyhedronOverlap(B.view(), pb.pos, pb.q, A.view(), pa.pos, pa.q);
         EXPECT_NEAR(rs.volume, r.volume, 1e-12 * r.volume);
-        EXPECT_LT(norm(rs.normal + r.normal), 1e-9);
+        if (r.contactArea > 1e-6 * std::min(A.surfaceArea, B.surfaceArea))
+        {
+            EXPECT_LT(norm(rs.normal + r.normal), 1e-9);
+        }
 
         // Feng's normal: S = -dV/dx_B by central differences (every 5th pair)
         if (pairs % 5 == 0)
@@ -210,7 +215,8 @@ TEST(polyhedraOverlap, alignedCubesFaceToFace)
             EXPECT_NEAR(r.centroid.y, 0.5 * dy, 1e-12);
             EXPECT_NEAR(r.centroid.z, 0.0, 1e-12);
             EXPECT_NEAR(norm(r.normal), 1.0, 1e-12);
-            if (dx > 0 && dy == 0)
+            // (a shift below the plane tolerance 1e-12 counts as none: S = 0)
+            if (dx > 1e-10 && dy == 0)
             {
                 EXPECT_NEAR(r.normal.x, 1.0, 1e-12);
                 EXPECT_NEAR(r.contactArea, 1.0, 1e-12); // the 1 x 1 face of B inside A
@@ -267,7 +273,7 @@ TEST(polyhedraOverlap, coincidentEdgesAndVertices)
     ASSERT_TRUE(finite(re));
     EXPECT_FALSE(re.touching);
     // Vertex of a turned cube exactly on a face, then slightly in
-    const Quaternion qv = normalised(fromAxisAngle(Vec3(1, 1, 0), std::atan(std::sqrt(2.0))));
+    const Quaternion qv = normalised(fromAxisAngle(Vec3(1, -1, 0), std::atan(std::sqrt(2.0))));
     const double tip = 0.5 * std::sqrt(3.0);
     for (double depth : {0.0, 1e-6, 1e-3})
     {
@@ -300,6 +306,7 @@ TEST(polyhedraOverlap, continuityAlongSweep)
         const double reach = A.boundingRadius + B.boundingRadius;
         const int n = 2000;
         OverlapResult prev;
+        Vec3 prevPos;
         for (int k = 0; k <= n; ++k)
         {
             const double s = reach * (1.0 - 0.5 * k / n);
@@ -308,11 +315,12 @@ TEST(polyhedraOverlap, continuityAlongSweep)
             ASSERT_TRUE(finite(r));
             if (prev.touching && r.touching)
             {
-                const double step = reach * 0.5 / n;
+                const double step = norm(pos - prevPos);
                 EXPECT_LT(std::fabs(r.volume - prev.volume), 2.0 * r.contactArea * step + 1e-15);
                 EXPECT_GT(dot(r.normal, prev.normal), 0.9);
             }
             prev = r;
+            prevPos = pos;
         }
     }
 }
@@ -347,7 +355,7 @@ TEST(polyhedraOverlap, cubeOnPlane)
     {
         const Vec3 n = randomDirection(rng);
         const Quaternion q = randomRotation(rng);
-        const Vec3 pos = (0.6 * rock.boundingRadius) * n + Vec3(0.1, 0.2, 0.3);
+        const Vec3 pos = (0.2 * rock.boundingRadius) * n + Vec3(0.1, 0.2, 0.3);
         const Vec3 p0(0.1, 0.2, 0.3);
         r = polyhedronPlaneOverlap(rock.view(), pos, q, p0, n);
         // Reference: the half-space as a large cube sharing the plane

@@ -1,0 +1,610 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    demFoam's simulation driver: start or restart, DEM sub-steps per deltaT,
+    wall removal, insertion, writing and monitoring (see demSimulation.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "demSimulation.H"
+#include "OSspecific.H"
+#include "IOmanip.H"
+#include "mathematicalConstants.H"
+
+#include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/RandomFill.hpp"
+#include "polyDEM/StateIO.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Append the particles of b to a
+static void appendParticles(polydem::ParticleState& a, const polydem::ParticleState& b)
+{
+    auto cat = [](auto& x, const auto& y) { x.insert(x.end(), y.begin(), y.end()); };
+    cat(a.id, b.id);
+    cat(a.type, b.type);
+    cat(a.radius, b.radius);
+    cat(a.mass, b.mass);
+    cat(a.inertia, b.inertia);
+    cat(a.position, b.position);
+    cat(a.orientation, b.orientation);
+    cat(a.velocity, b.velocity);
+    cat(a.omega, b.omega);
+    cat(a.force, b.force);
+    cat(a.torque, b.torque);
+}
+
+
+static int64_t nextId(const polydem::ParticleState& p)
+{
+    int64_t next = 0;
+    for (const int64_t id : p.id)
+    {
+        next = std::max(next, id + 1);
+    }
+    return next;
+}
+
+
+//- Wall-clock duration as h:mm:ss
+static std::string hms(double s)
+{
+    if (!(s >= 0) || s > 1e7)
+    {
+        return "-";
+    }
+    const long t = long(std::lround(s));
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%ld:%02ld:%02ld", t/3600, (t/60)%60, t%60);
+    return buf;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::demSimulation::computeStepsPerDeltaT() const
+{
+    const scalar deltaT = runTime_.deltaTValue();
+    const scalar dt = input_.config().timeStep;
+    const scalar ratio = deltaT/dt;
+    const label n = label(std::llround(ratio));
+    if (n < 1 || mag(n*dt - deltaT) > 1e-9*deltaT)
+    {
+        const dictionary& dict = input_.dict();
+        const entry* e = dict.findEntry("timeStep", keyType::LITERAL);
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            dict.name(), e ? e->startLineNumber() : -1
+        )
+            << "The DEM time step (entry 'timeStep' " << dt << " s of "
+            << dict.name() << ")" << nl
+            << "    does not divide the controlDict deltaT " << deltaT
+            << " s: deltaT/timeStep = " << setprecision(12) << ratio << nl
+            << "    deltaT must be a whole multiple of timeStep (to 1e-9)"
+            << nl << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+void Foam::demSimulation::startSystem(polydem::Snapshot state)
+{
+    polydem::SimulationConfig config = input_.configWith(wallActive_, wallMap_);
+    system_.reset(new polydem::System(std::move(config)));
+    system_->initialise(std::move(state));
+}
+
+
+bool Foam::demSimulation::removeDueWalls()
+{
+    const int64_t step = system_->engine().step();
+    std::vector<bool> active(wallActive_);
+    bool changed = false;
+    for (size_t k = 0; k < active.size(); ++k)
+    {
+        if (active[k] && wallRemovalStep_[k] >= 0 && step >= wallRemovalStep_[k])
+        {
+            active[k] = false;
+            changed = true;
+            Info<< "DEM t = " << system_->engine().time() << " s: wall '"
+                << input_.walls()[k].name << "' removed (activeUntil "
+                << input_.walls()[k].activeUntil << ")" << endl;
+        }
+    }
+    if (!changed)
+    {
+        return false;
+    }
+
+    polydem::Snapshot state = system_->engine().snapshot();
+
+    // Wall springs: running-system index -> full index -> new index
+    const std::vector<int> oldMap(wallMap_);
+    wallActive_ = active;
+    std::vector<int> newMap;
+    input_.configWith(wallActive_, newMap);
+    std::unordered_map<int, int> renumber;
+    for (size_t f = 0; f < oldMap.size(); ++f)
+    {
+        if (oldMap[f] >= 0)
+        {
+            renumber[oldMap[f]] = newMap[f];
+        }
+    }
+    std::vector<polydem::WallHistory> kept;
+    for (const auto& w : state.walls)
+    {
+        const auto it = renumber.find(w.wall);
+        if (it != renumber.end() && it->second >= 0)
+        {
+            kept.push_back(w);
+            kept.back().wall = it->second;
+        }
+    }
+    state.walls.swap(kept);
+    startSystem(std::move(state));
+    return true;
+}
+
+
+polydem::ParticleState Foam::demSimulation::insert
+(
+    size_t k,
+    const polydem::ParticleState& obstacles,
+    int64_t firstId
+) const
+{
+    const auto& ins = input_.insertions()[k];
+    std::vector<polydem::SphereSeed> existing(obstacles.size());
+    for (size_t i = 0; i < obstacles.size(); ++i)
+    {
+        existing[i].position = obstacles.position[i];
+        existing[i].radius = obstacles.radius[i];
+    }
+
+    std::vector<polydem::SphereSeed> seeds;
+    try
+    {
+        seeds = polydem::randomFill
+        (
+            ins.region, ins.sizes, size_t(ins.number), uint64_t(ins.seed),
+            ins.gap, existing
+        );
+    }
+    catch (const polydem::Error& err)
+    {
+        throw polydem::Error
+        (
+            err.message(), input_.dict().name(),
+            "insertion/" + ins.name + "/number"
+        );
+    }
+
+    std::vector<polydem::Vec3> positions(seeds.size());
+    std::vector<double> radii(seeds.size());
+    double volume = 0;
+    for (size_t i = 0; i < seeds.size(); ++i)
+    {
+        positions[i] = seeds[i].position;
+        radii[i] = seeds[i].radius;
+        volume += 4.0/3.0*constant::mathematical::pi*std::pow(radii[i], 3);
+    }
+    polydem::ParticleState p =
+        system_->makeSpheres(ins.type, positions, radii, firstId);
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        p.velocity[i] = ins.velocity;
+    }
+    Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
+        << " spheres, solid fraction of the region "
+        << volume/std::max(ins.region.volume(), VSMALL) << endl;
+    return p;
+}
+
+
+void Foam::demSimulation::insertDue()
+{
+    const scalar t = runTime_.value() - runTime_.deltaTValue();
+    for (size_t k = 0; k < insertionDone_.size(); ++k)
+    {
+        if (insertionDone_[k])
+        {
+            continue;
+        }
+        const auto& ins = input_.insertions()[k];
+        if (ins.time > t + 1e-9*runTime_.deltaTValue())
+        {
+            continue;
+        }
+        insertionDone_[k] = true;
+        const polydem::ParticleState present = system_->engine().particles();
+        polydem::ParticleState added = insert(k, present, nextId(present));
+        if (added.size() == 0)
+        {
+            continue;
+        }
+        const double dtMax = system_->criticalTimeStep(added);
+        if (input_.config().timeStep > dtMax)
+        {
+            throw polydem::Error
+            (
+                "time step " + std::to_string(input_.config().timeStep)
+              + " s is above the contact-stability limit "
+              + std::to_string(dtMax) + " s of the particles of insertion '"
+              + ins.name + "'",
+                input_.dict().name(), "timeStep"
+            );
+        }
+        system_->engine().addParticles(added);
+    }
+}
+
+
+polydem::TriangleMesh Foam::demSimulation::wallSurface
+(
+    scalar t,
+    std::vector<int>& ids
+) const
+{
+    polydem::TriangleMesh surface;
+    ids.clear();
+    const auto& config = input_.config();
+    const auto& walls = input_.walls();
+
+    auto place = [t](const polydem::WallMotion& m, const polydem::Vec3& y)
+    {
+        if (m.kind == polydem::MotionKind::translation)
+        {
+            return y + t*m.velocity;
+        }
+        if (m.kind == polydem::MotionKind::rotation)
+        {
+            const polydem::Vec3 a = m.axis/norm(m.axis);
+            const polydem::Quaternion R = polydem::fromRotationVector((m.omega*t)*a);
+            return m.origin + polydem::rotate(R, y - m.origin);
+        }
+        return y;
+    };
+
+    for (size_t k = 0; k < walls.size(); ++k)
+    {
+        if (!wallActive_[k])
+        {
+            continue;
+        }
+        const int base = int(surface.points.size());
+        if (walls[k].isPlane)
+        {
+            const auto& pl = config.planes[walls[k].index];
+            const polydem::Vec3 n = pl.normal/norm(pl.normal);
+            // A square centred at the scene centre's foot on the plane
+            const scalar size =
+                walls[k].displaySize > 0 ? walls[k].displaySize : input_.sceneSize();
+            const polydem::Vec3 c =
+                input_.sceneCentre() - dot(input_.sceneCentre() - pl.point, n)*n;
+            polydem::Vec3 u = cross(n, polydem::Vec3(1, 0, 0));
+            if (norm(u) < 0.1)
+            {
+                u = cross(n, polydem::Vec3(0, 1, 0));
+            }
+            u = (0.5*size/norm(u))*u;
+            const polydem::Vec3 v = cross(n, u);
+            surface.points.push_back(place(pl.motion, c - u - v));
+            surface.points.push_back(place(pl.motion, c + u - v));
+            surface.points.push_back(place(pl.motion, c + u + v));
+            surface.points.push_back(place(pl.motion, c - u + v));
+            surface.triangles.push_back({base, base + 1, base + 2});
+            surface.triangles.push_back({base, base + 2, base + 3});
+            ids.push_back(int(k));
+            ids.push_back(int(k));
+        }
+        else
+        {
+            const auto& mw = config.meshes[walls[k].index];
+            for (const auto& y : mw.mesh.points)
+            {
+                surface.points.push_back(place(mw.motion, y));
+            }
+            for (const auto& tri : mw.mesh.triangles)
+            {
+                surface.triangles.push_back
+                (
+                    {tri[0] + base, tri[1] + base, tri[2] + base}
+                );
+                ids.push_back(int(k));
+            }
+        }
+    }
+    return surface;
+}
+
+
+void Foam::demSimulation::writeState()
+{
+    const fileName dir(runTime_.timePath()/"polyDEM");
+    mkDir(dir);
+    const polydem::Snapshot state = system_->engine().snapshot();
+    polydem::writeSnapshot(dir/"state", state, input_.stateFormat());
+
+    if (input_.writeVtk())
+    {
+        const fileName rel(runTime_.timeName()/"polyDEM");
+        // The time as the folder shows it (no round-off digits)
+        const scalar t = readScalar(runTime_.timeName());
+        polydem::writeParticlesVtp(dir/"particles.vtp", state.particles);
+        particlesPvd_.add(t, rel/"particles.vtp");
+        particlesPvd_.write(runTime_.path()/"particles.pvd");
+
+        std::vector<int> ids;
+        const polydem::TriangleMesh walls = wallSurface(state.time, ids);
+        if (walls.size())
+        {
+            polydem::writeSurfaceVtp(dir/"walls.vtp", walls, ids, "wall");
+            wallsPvd_.add(t, rel/"walls.vtp");
+            wallsPvd_.write(runTime_.path()/"walls.pvd");
+        }
+    }
+    Info<< "DEM t = " << state.time << " s: wrote " << dir << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demSimulation::demSimulation
+(
+    const Time& runTime,
+    const IOdictionary& properties
+)
+:
+    runTime_(runTime),
+    properties_(properties),
+    input_(properties),
+    system_(),
+    wallActive_(input_.walls().size(), true),
+    wallRemovalStep_(input_.walls().size(), -1),
+    wallMap_(),
+    insertionDone_(input_.insertions().size(), false),
+    stepsPerDeltaT_(computeStepsPerDeltaT()),
+    monitors_(),
+    summary_(),
+    clock_(),
+    wallStart_(0),
+    lastReportWall_(0),
+    lastReportStep_(0),
+    startStep_(0),
+    startTimeValue_(runTime.value())
+{
+    const scalar dt = input_.config().timeStep;
+    for (size_t k = 0; k < wallRemovalStep_.size(); ++k)
+    {
+        const scalar until = input_.walls()[k].activeUntil;
+        if (until < 0.5*GREAT)
+        {
+            wallRemovalStep_[k] = int64_t(std::llround(until/dt));
+        }
+    }
+
+    const fileName statePath(runTime_.timePath()/"polyDEM"/"state");
+    const int64_t startStep = int64_t(std::llround(runTime_.value()/dt));
+
+    // Walls already removed at the start time
+    for (size_t k = 0; k < wallActive_.size(); ++k)
+    {
+        wallActive_[k] = wallRemovalStep_[k] < 0 || startStep < wallRemovalStep_[k];
+    }
+
+    const bool restart = isFile(statePath);
+    if (restart)
+    {
+        Info<< "DEM: restarting from " << statePath << endl;
+        polydem::Snapshot state = polydem::readSnapshot(statePath);
+        if (mag(state.time - runTime_.value()) > 1e-6*runTime_.deltaTValue())
+        {
+            WarningInFunction
+                << "The state in " << statePath << " is at t = " << state.time
+                << " s, the time folder says " << runTime_.value() << " s"
+                << endl;
+        }
+        // Insertions before the restart time are in the state already
+        for (size_t k = 0; k < insertionDone_.size(); ++k)
+        {
+            insertionDone_[k] =
+                input_.insertions()[k].time
+              < runTime_.value() - 1e-9*runTime_.deltaTValue();
+        }
+        startSystem(std::move(state));
+
+        particlesPvd_.read(runTime_.path()/"particles.pvd", runTime_.value());
+        wallsPvd_.read(runTime_.path()/"walls.pvd", runTime_.value());
+        const fileName rel(runTime_.timeName()/"polyDEM");
+        if (isFile(runTime_.timePath()/"polyDEM"/"particles.vtp"))
+        {
+            particlesPvd_.add(runTime_.value(), rel/"particles.vtp");
+        }
+        if (isFile(runTime_.timePath()/"polyDEM"/"walls.vtp"))
+        {
+            wallsPvd_.add(runTime_.value(), rel/"walls.vtp");
+        }
+    }
+    else
+    {
+        Info<< "DEM: fresh start at t = " << runTime_.value()
+            << " s (no " << statePath << ")" << endl;
+
+        polydem::Snapshot state;
+        state.time = runTime_.value();
+        state.step = startStep;
+
+        // The system first (it checks the config), then the particles
+        startSystem(state);
+        for (size_t k = 0; k < insertionDone_.size(); ++k)
+        {
+            if (input_.insertions()[k].time <= runTime_.value() + 1e-9*runTime_.deltaTValue())
+            {
+                insertionDone_[k] = true;
+                appendParticles
+                (
+                    state.particles,
+                    insert(k, state.particles, nextId(state.particles))
+                );
+            }
+        }
+        startSystem(std::move(state));
+        removeDueWalls();
+        writeState();
+    }
+
+    Info<< "DEM: " << label(system_->engine().particles().size())
+        << " particles, back end '" << system_->engine().name().c_str()
+        << "', time step " << dt << " s, " << stepsPerDeltaT_
+        << " steps per deltaT" << endl;
+
+    // Monitors
+    if (const dictionary* md = properties_.findDict("monitors"))
+    {
+        for (const entry& e : *md)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*md)
+                    << "Entry 'monitors/" << e.keyword()
+                    << "' must be a dictionary in " << input_.dict().name()
+                    << nl << exit(FatalIOError);
+            }
+            monitors_.append
+            (
+                demMonitor::New(e.keyword(), e.dict(), runTime_, input_.config())
+            );
+        }
+    }
+
+    // Summary
+    const fileName summaryDir
+    (
+        runTime_.path()/"postProcessing"/"demFoam"/runTime_.timeName()
+    );
+    mkDir(summaryDir);
+    summary_.reset(new OFstream(summaryDir/"summary.dat"));
+    summary_().precision(10);
+    summary_()
+        << "# demFoam summary: energies [J]; maxOverlapRatio = largest "
+        << "overlap/radius" << nl
+        << "# time step particles contacts wallContacts particlesInContact "
+        << "kineticEnergy translationalEnergy rotationalEnergy "
+        << "gravitationalEnergy maxOverlapRatio" << endl;
+
+    wallStart_ = clock_.elapsedTime();
+    lastReportWall_ = wallStart_;
+    lastReportStep_ = system_->engine().step();
+    startStep_ = lastReportStep_;
+    sample();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demSimulation::evolve()
+{
+    insertDue();
+
+    const int64_t target = system_->engine().step() + stepsPerDeltaT_;
+    while (system_->engine().step() < target)
+    {
+        const int64_t step = system_->engine().step();
+        int64_t next = target;
+        for (size_t k = 0; k < wallActive_.size(); ++k)
+        {
+            if (wallActive_[k] && wallRemovalStep_[k] > step)
+            {
+                next = std::min(next, wallRemovalStep_[k]);
+            }
+        }
+        system_->advance(next - step);
+        removeDueWalls();
+    }
+    report();
+}
+
+
+void Foam::demSimulation::sample()
+{
+    const polydem::Engine& engine = system_->engine();
+    const polydem::Statistics s = engine.statistics();
+    const polydem::Energies e = engine.energies();
+    summary_()
+        << engine.time() << ' ' << engine.step() << ' '
+        << label(s.particles) << ' ' << label(s.contacts) << ' '
+        << label(s.wallContacts) << ' ' << label(s.particlesInContact) << ' '
+        << e.kinetic() << ' ' << e.translational << ' ' << e.rotational << ' '
+        << e.gravitational << ' ' << s.maxOverlapRatio << endl;
+
+    if (monitors_.size())
+    {
+        const polydem::ParticleState p = engine.particles();
+        for (demMonitor& m : monitors_)
+        {
+            m.update(engine.time(), p);
+        }
+    }
+}
+
+
+void Foam::demSimulation::write()
+{
+    if (runTime_.writeTime())
+    {
+        writeState();
+    }
+}
+
+
+void Foam::demSimulation::report(bool force)
+{
+    const scalar now = clock_.elapsedTime();
+    if (!force && now - lastReportWall_ < input_.reportInterval())
+    {
+        return;
+    }
+    const polydem::Engine& engine = system_->engine();
+    const polydem::Statistics s = engine.statistics();
+    const polydem::Energies e = engine.energies();
+    // Rates since the last report, or over the whole run for the last line
+    const int64_t steps =
+        engine.step() - (force ? startStep_ : lastReportStep_);
+    const scalar span = max(now - (force ? wallStart_ : lastReportWall_), 1e-9);
+    const scalar stepRate = steps/span;
+
+    const scalar done = runTime_.value() - startTimeValue_;
+    const scalar left = runTime_.endTime().value() - runTime_.value();
+    const scalar eta = done > 0 ? left/done*(now - wallStart_) : -1;
+
+    Info<< "DEM t = " << engine.time() << " s"
+        << "  step " << label(engine.step())
+        << "  " << label(std::lround(stepRate)) << " steps/s"
+        << "  " << stepRate*s.particles << " particle-steps/s" << nl
+        << "    particles " << label(s.particles)
+        << "  in contact " << label(s.particlesInContact)
+        << "  contacts " << label(s.contacts)
+        << " (+" << label(s.wallContacts) << " with walls)"
+        << "  kinetic energy " << e.kinetic() << " J"
+        << "  wall time " << hms(now - wallStart_).c_str()
+        << "  left " << hms(eta).c_str() << endl;
+
+    lastReportWall_ = now;
+    lastReportStep_ = engine.step();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,830 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    demProperties -> polydem::SimulationConfig (see demPropertiesReader.H and
+    docs/demProperties.md).
+
+\*---------------------------------------------------------------------------*/
+
+#include "demPropertiesReader.H"
+#include "IOstreams.H"
+#include "Tuple2.H"
+#include "mathematicalConstants.H"
+
+#include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/StlReader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Read a word entry that must be one of valid; returns its position
+static label selectName
+(
+    const dictionary& d,
+    const word& key,
+    const wordList& valid,
+    const word& what
+)
+{
+    const word name(d.get<word>(key));
+    const label i = valid.find(name);
+    if (i < 0)
+    {
+        FatalIOErrorInFunction(d)
+            << "Unknown " << what << " '" << name << "' in entry '" << key
+            << "' of " << d.name() << nl
+            << "Valid " << what << "s: " << valid << nl
+            << exit(FatalIOError);
+    }
+    return i;
+}
+
+
+//- As selectName, with a default when the entry is absent
+static label selectNameOrDefault
+(
+    const dictionary& d,
+    const word& key,
+    const wordList& valid,
+    const word& what,
+    const label deflt
+)
+{
+    if (!d.found(key, keyType::LITERAL))
+    {
+        return deflt;
+    }
+    return selectName(d, key, valid, what);
+}
+
+
+//- A required sub-dictionary (FatalIOError naming it when absent)
+static const dictionary& requiredDict(const dictionary& d, const word& key)
+{
+    return d.subDict(key);
+}
+
+
+//- The entry at a slash-separated path ("walls/hopper/file"), or nullptr
+static const entry* findPath(const dictionary& top, const std::string& path)
+{
+    const dictionary* d = &top;
+    const entry* e = nullptr;
+    std::string rest = path;
+    while (!rest.empty() && d)
+    {
+        const auto slash = rest.find('/');
+        const word key(rest.substr(0, slash));
+        e = d->findEntry(key, keyType::LITERAL);
+        if (!e)
+        {
+            return nullptr;
+        }
+        rest = slash == std::string::npos ? "" : rest.substr(slash + 1);
+        d = e->isDict() ? &e->dict() : nullptr;
+    }
+    return rest.empty() ? e : nullptr;
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+Foam::fileName Foam::demPropertiesReader::resolveSurface
+(
+    const dictionary& demProperties,
+    const fileName& file
+)
+{
+    fileName f(file);
+    f.expand();
+    if (f.isAbsolute())
+    {
+        return f;
+    }
+    // demProperties' name is <case>/constant/demProperties
+    return fileName(demProperties.name()).path()/"triSurface"/f;
+}
+
+
+polydem::TriangleMesh Foam::demPropertiesReader::readSurface
+(
+    const dictionary& demProperties,
+    const dictionary& entryDict,
+    const word& fileKey,
+    const std::string& entryPath
+)
+{
+    const fileName file(resolveSurface(demProperties, entryDict.get<fileName>(fileKey)));
+    const scalar scale = entryDict.getOrDefault<scalar>("scale", 1.0);
+    try
+    {
+        polydem::StlReadInfo info;
+        polydem::TriangleMesh mesh = polydem::readStl(file, scale, &info);
+        Info<< "    " << entryPath << ": " << file << ", "
+            << mesh.size() << " triangles";
+        if (info.degenerateDropped)
+        {
+            Info<< " (" << label(info.degenerateDropped)
+                << " degenerate dropped)";
+        }
+        Info<< endl;
+        return mesh;
+    }
+    catch (const polydem::Error& err)
+    {
+        const entry* e = entryDict.findEntry(fileKey, keyType::LITERAL);
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            demProperties.name(),
+            e ? e->startLineNumber() : -1
+        )
+            << "Cannot use the surface file " << file << nl
+            << "    named in entry '" << entryPath << "' of "
+            << demProperties.name() << nl
+            << "    " << err.message().c_str() << nl
+            << exit(FatalIOError);
+    }
+    return polydem::TriangleMesh();
+}
+
+
+void Foam::demPropertiesReader::reportError
+(
+    const polydem::Error& err,
+    const dictionary& demProperties
+)
+{
+    const entry* e = findPath(demProperties, err.entry());
+    string where = demProperties.name();
+    if (!err.file().empty() && err.file() != demProperties.name())
+    {
+        where = err.file();
+    }
+
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__,
+        demProperties.name(),
+        e ? e->startLineNumber() : -1
+    )
+        << "polyDEM: " << err.message().c_str() << nl;
+
+    if (!err.entry().empty())
+    {
+        FatalIOError
+            << "    entry '" << err.entry().c_str() << "' of "
+            << demProperties.name() << nl;
+    }
+    if (where != demProperties.name())
+    {
+        FatalIOError<< "    file " << where << nl;
+    }
+    FatalIOError<< exit(FatalIOError);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+int Foam::demPropertiesReader::materialIndex
+(
+    const dictionary& d,
+    const word& key
+) const
+{
+    const word name(d.get<word>(key));
+    for (size_t i = 0; i < config_.materials.size(); ++i)
+    {
+        if (config_.materials[i].name == name)
+        {
+            return int(i);
+        }
+    }
+    wordList valid;
+    for (const auto& m : config_.materials)
+    {
+        valid.append(word(m.name));
+    }
+    FatalIOErrorInFunction(d)
+        << "Unknown material '" << name << "' in entry '" << key << "' of "
+        << d.name() << nl
+        << "Valid materials (from 'materials'): " << valid << nl
+        << exit(FatalIOError);
+    return -1;
+}
+
+
+int Foam::demPropertiesReader::typeIndex
+(
+    const dictionary& d,
+    const word& key
+) const
+{
+    const word name(d.get<word>(key));
+    for (size_t i = 0; i < config_.types.size(); ++i)
+    {
+        if (config_.types[i].name == name)
+        {
+            return int(i);
+        }
+    }
+    wordList valid;
+    for (const auto& t : config_.types)
+    {
+        valid.append(word(t.name));
+    }
+    FatalIOErrorInFunction(d)
+        << "Unknown particle type '" << name << "' in entry '" << key
+        << "' of " << d.name() << nl
+        << "Valid particle types (from 'particleTypes'): " << valid << nl
+        << exit(FatalIOError);
+    return -1;
+}
+
+
+void Foam::demPropertiesReader::readGeneral()
+{
+    config_.source = dict_.name();
+    config_.device = dict_.getOrDefault<word>("device", "cpu");
+    config_.timeStep = dict_.get<scalar>("timeStep");
+    if (!(config_.timeStep > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'timeStep' must be positive, got " << config_.timeStep
+            << " in " << dict_.name() << nl << exit(FatalIOError);
+    }
+    config_.gravity = toVec3(dict_.getOrDefault<vector>("gravity", vector(0, 0, -9.81)));
+    config_.skinFraction = dict_.getOrDefault<scalar>("skin", 0.2);
+
+    if (const dictionary* dom = dict_.findDict("domain"))
+    {
+        config_.domainMin = toVec3(dom->get<vector>("min"));
+        config_.domainMax = toVec3(dom->get<vector>("max"));
+        for (int k = 0; k < 3; ++k)
+        {
+            if (!(config_.domainMin[k] < config_.domainMax[k]))
+            {
+                FatalIOErrorInFunction(*dom)
+                    << "Entry 'domain': min must be below max in every "
+                    << "direction, in " << dict_.name() << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::demPropertiesReader::readContactModel()
+{
+    const dictionary& d = requiredDict(dict_, "contactModel");
+
+    static const wordList laws({"hertzMindlin", "linearSpringDashpot"});
+    static const wordList rollings({"none", "constantTorque", "elasticPlastic"});
+
+    config_.contact.law = polydem::ContactLaw(selectName(d, "law", laws, "contact law"));
+    config_.contact.rolling =
+        polydem::RollingModel(selectNameOrDefault(d, "rolling", rollings, "rolling model", 0));
+
+    if (config_.contact.law == polydem::ContactLaw::linearSpringDashpot)
+    {
+        config_.contact.normalStiffness = d.get<scalar>("normalStiffness");
+        config_.contact.tangentialStiffnessRatio =
+            d.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0);
+    }
+}
+
+
+void Foam::demPropertiesReader::readMaterials()
+{
+    const dictionary& d = requiredDict(dict_, "materials");
+    for (const entry& e : d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'materials/" << e.keyword()
+                << "' must be a dictionary { youngsModulus ..; poissonsRatio ..; "
+                << "density ..; } in " << dict_.name() << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& md = e.dict();
+        polydem::Material m;
+        m.name = e.keyword();
+        m.youngsModulus = md.get<scalar>("youngsModulus");
+        m.poissonsRatio = md.get<scalar>("poissonsRatio");
+        m.density = md.get<scalar>("density");
+        config_.materials.push_back(m);
+    }
+    if (config_.materials.empty())
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'materials' of " << dict_.name()
+            << " defines no material" << nl << exit(FatalIOError);
+    }
+}
+
+
+void Foam::demPropertiesReader::readInteractions()
+{
+    const dictionary& d = requiredDict(dict_, "interactions");
+    const size_t nm = config_.materials.size();
+    config_.pairs.assign(nm*nm, polydem::PairProperties());
+    std::vector<bool> given(nm*nm, false);
+
+    const bool rolling =
+        config_.contact.rolling != polydem::RollingModel::none;
+
+    auto readPair = [&](const dictionary& pd, polydem::PairProperties& p)
+    {
+        p.restitution = pd.get<scalar>("restitution");
+        p.friction = pd.get<scalar>("friction");
+        if (rolling)
+        {
+            p.rollingFriction = pd.get<scalar>("rollingFriction");
+        }
+        else
+        {
+            p.rollingFriction = pd.getOrDefault<scalar>("rollingFriction", 0);
+        }
+        p.rollingDamping = pd.getOrDefault<scalar>("rollingDamping", 0.3);
+    };
+
+    if (const dictionary* def = d.findDict("default"))
+    {
+        polydem::PairProperties p;
+        readPair(*def, p);
+        config_.pairs.assign(nm*nm, p);
+        given.assign(nm*nm, true);
+    }
+
+    for (const entry& e : d)
+    {
+        if (e.keyword() == "default")
+        {
+            continue;
+        }
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'interactions/" << e.keyword() << "' must be a "
+                << "dictionary { materials (a b); restitution ..; ... } in "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+        const dictionary& pd = e.dict();
+        const wordList names(pd.get<wordList>("materials"));
+        if (names.size() != 2)
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry 'interactions/" << e.keyword()
+                << "/materials' must name two materials, e.g. (glass steel), in "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+        int idx[2];
+        for (int k = 0; k < 2; ++k)
+        {
+            dictionary one;
+            one.add("material", names[k]);
+            one.name() = pd.name() + "/materials";
+            idx[k] = materialIndex(one, "material");
+        }
+        polydem::PairProperties p;
+        readPair(pd, p);
+        config_.pairs[idx[0]*nm + idx[1]] = p;
+        config_.pairs[idx[1]*nm + idx[0]] = p;
+        given[idx[0]*nm + idx[1]] = given[idx[1]*nm + idx[0]] = true;
+    }
+
+    for (size_t a = 0; a < nm; ++a)
+    {
+        for (size_t b = a; b < nm; ++b)
+        {
+            if (!given[a*nm + b])
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry 'interactions' of " << dict_.name()
+                    << " gives no properties for the pair ("
+                    << config_.materials[a].name.c_str() << ' '
+                    << config_.materials[b].name.c_str()
+                    << "): add a 'default' dictionary or one with "
+                    << "materials (" << config_.materials[a].name.c_str() << ' '
+                    << config_.materials[b].name.c_str() << ");" << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::demPropertiesReader::readParticleTypes()
+{
+    const dictionary& d = requiredDict(dict_, "particleTypes");
+    static const wordList shapes({"sphere"});
+    for (const entry& e : d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'particleTypes/" << e.keyword()
+                << "' must be a dictionary in " << dict_.name() << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& td = e.dict();
+        polydem::ParticleType t;
+        t.name = e.keyword();
+        selectNameOrDefault(td, "shape", shapes, "particle shape", 0);
+        t.shape = polydem::ShapeKind::sphere;
+        t.material = materialIndex(td, "material");
+        t.radius = 0.5*td.get<scalar>("diameter");
+        config_.types.push_back(t);
+    }
+    if (config_.types.empty())
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'particleTypes' of " << dict_.name()
+            << " defines no particle type" << nl << exit(FatalIOError);
+    }
+}
+
+
+polydem::WallMotion Foam::demPropertiesReader::readMotion
+(
+    const dictionary& wallDict
+) const
+{
+    polydem::WallMotion m;
+    const dictionary* md = wallDict.findDict("motion");
+    if (!md)
+    {
+        return m;
+    }
+    static const wordList kinds({"fixed", "translation", "rotation"});
+    m.kind = polydem::MotionKind(selectName(*md, "type", kinds, "wall motion type"));
+    if (m.kind == polydem::MotionKind::translation)
+    {
+        m.velocity = toVec3(md->get<vector>("velocity"));
+    }
+    else if (m.kind == polydem::MotionKind::rotation)
+    {
+        m.origin = toVec3(md->get<vector>("origin"));
+        m.axis = toVec3(md->get<vector>("axis"));
+        const bool hasRpm = md->found("rpm", keyType::LITERAL);
+        const bool hasOmega = md->found("omega", keyType::LITERAL);
+        if (hasRpm == hasOmega)
+        {
+            FatalIOErrorInFunction(*md)
+                << "Rotation of " << md->name() << " needs exactly one of "
+                << "'rpm' (revolutions per minute) or 'omega' [rad/s]" << nl
+                << exit(FatalIOError);
+        }
+        m.omega = hasRpm
+            ? md->get<scalar>("rpm")*constant::mathematical::twoPi/60.0
+            : md->get<scalar>("omega");
+    }
+    return m;
+}
+
+
+void Foam::demPropertiesReader::readWalls()
+{
+    const dictionary* d = dict_.findDict("walls");
+    if (!d)
+    {
+        return;
+    }
+    static const wordList types({"plane", "mesh"});
+    for (const entry& e : *d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*d)
+                << "Entry 'walls/" << e.keyword() << "' must be a dictionary in "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+        const dictionary& wd = e.dict();
+        wallInfo info;
+        info.name = e.keyword();
+        info.activeUntil = wd.getOrDefault<scalar>("activeUntil", GREAT);
+        info.displaySize = wd.getOrDefault<scalar>("displaySize", 0);
+
+        const label kind = selectName(wd, "type", types, "wall type");
+        if (kind == 0)
+        {
+            polydem::PlaneWall w;
+            w.name = e.keyword();
+            w.point = toVec3(wd.get<vector>("point"));
+            w.normal = toVec3(wd.get<vector>("normal"));
+            w.material = materialIndex(wd, "material");
+            w.motion = readMotion(wd);
+            info.isPlane = true;
+            info.index = label(config_.planes.size());
+            config_.planes.push_back(w);
+        }
+        else
+        {
+            polydem::MeshWall w;
+            w.name = e.keyword();
+            w.material = materialIndex(wd, "material");
+            w.motion = readMotion(wd);
+            w.mesh = readSurface(dict_, wd, "file", "walls/" + e.keyword() + "/file");
+            info.isPlane = false;
+            info.index = label(config_.meshes.size());
+            config_.meshes.push_back(std::move(w));
+        }
+        walls_.push_back(info);
+    }
+}
+
+
+polydem::SizeDistribution Foam::demPropertiesReader::readDistribution
+(
+    const dictionary& id,
+    const polydem::ParticleType& type
+) const
+{
+    polydem::SizeDistribution s;
+    const dictionary* dd = id.findDict("diameterDistribution");
+    if (!dd)
+    {
+        s = polydem::SizeDistribution::fixedDiameter(2*type.radius);
+    }
+    else
+    {
+        static const wordList kinds({"fixed", "uniform", "normal", "discrete"});
+        const label kind = selectName(*dd, "type", kinds, "diameter distribution");
+        switch (kind)
+        {
+            case 0:
+                s = polydem::SizeDistribution::fixedDiameter
+                (
+                    dd->getOrDefault<scalar>("diameter", 2*type.radius)
+                );
+                break;
+            case 1:
+                s = polydem::SizeDistribution::uniform
+                (
+                    dd->get<scalar>("min"), dd->get<scalar>("max")
+                );
+                break;
+            case 2:
+                s = polydem::SizeDistribution::normal
+                (
+                    dd->get<scalar>("mean"),
+                    dd->get<scalar>("standardDeviation"),
+                    dd->get<scalar>("min"),
+                    dd->get<scalar>("max")
+                );
+                break;
+            default:
+            {
+                const List<Tuple2<scalar, scalar>> f
+                (
+                    dd->get<List<Tuple2<scalar, scalar>>>("fractions")
+                );
+                std::vector<std::pair<double, double>> fr;
+                for (const auto& t : f)
+                {
+                    fr.emplace_back(t.first(), t.second());
+                }
+                s = polydem::SizeDistribution::discrete(fr);
+                break;
+            }
+        }
+    }
+    s.source = dict_.name();
+    try
+    {
+        s.validate();
+    }
+    catch (const polydem::Error& err)
+    {
+        // The engine names the distribution's own entry: prefix its path
+        const std::string sub = err.entry() == "sd" ? "standardDeviation" : err.entry();
+        reportError
+        (
+            polydem::Error
+            (
+                err.message(), dict_.name(),
+                "insertion/" + std::string(id.dictName())
+              + "/diameterDistribution" + (sub.empty() ? "" : "/" + sub)
+            ),
+            dict_
+        );
+    }
+    return s;
+}
+
+
+polydem::FillRegion Foam::demPropertiesReader::readRegion
+(
+    const dictionary& id
+) const
+{
+    const dictionary& rd = id.subDict("region");
+    static const wordList kinds({"box", "stl"});
+    const label kind = selectName(rd, "type", kinds, "region type");
+    if (kind == 0)
+    {
+        return polydem::FillRegion::box
+        (
+            toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+        );
+    }
+
+    const std::string path =
+        "insertion/" + std::string(id.dictName()) + "/region/file";
+    polydem::TriangleMesh mesh = readSurface(dict_, rd, "file", path);
+    try
+    {
+        if (rd.found("min", keyType::LITERAL) || rd.found("max", keyType::LITERAL))
+        {
+            return polydem::FillRegion::insideMesh
+            (
+                std::move(mesh),
+                toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+            );
+        }
+        return polydem::FillRegion::insideMesh(std::move(mesh));
+    }
+    catch (const polydem::Error& err)
+    {
+        reportError(polydem::Error(err.message(), err.file(), path), dict_);
+    }
+    return polydem::FillRegion();
+}
+
+
+void Foam::demPropertiesReader::readInsertions()
+{
+    const dictionary* d = dict_.findDict("insertion");
+    if (!d)
+    {
+        return;
+    }
+    static const wordList kinds({"randomFill"});
+    for (const entry& e : *d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*d)
+                << "Entry 'insertion/" << e.keyword()
+                << "' must be a dictionary in " << dict_.name() << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& id = e.dict();
+        selectName(id, "type", kinds, "insertion type");
+        insertion ins;
+        ins.name = e.keyword();
+        ins.type = typeIndex(id, "particleType");
+        ins.number = id.get<label>("number");
+        ins.seed = id.getOrDefault<label>("seed", 1);
+        ins.gap = id.getOrDefault<scalar>("gap", 0);
+        ins.velocity = toVec3(id.getOrDefault<vector>("velocity", Zero));
+        ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (ins.number < 0)
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword()
+                << "/number' must not be negative in " << dict_.name() << nl
+                << exit(FatalIOError);
+        }
+        ins.sizes = readDistribution(id, config_.types[ins.type]);
+        ins.region = readRegion(id);
+        insertions_.push_back(std::move(ins));
+    }
+}
+
+
+void Foam::demPropertiesReader::readOutput()
+{
+    stateFormat_ = polydem::StateFormat::ascii;
+    writeVtk_ = true;
+    reportInterval_ = dict_.getOrDefault<scalar>("reportInterval", 5);
+    if (const dictionary* od = dict_.findDict("output"))
+    {
+        static const wordList formats({"ascii", "binary"});
+        stateFormat_ = polydem::StateFormat
+        (
+            selectNameOrDefault(*od, "format", formats, "state format", 0)
+        );
+        writeVtk_ = od->getOrDefault<bool>("vtk", true);
+    }
+}
+
+
+void Foam::demPropertiesReader::computeScene()
+{
+    polydem::Vec3 lo(GREAT, GREAT, GREAT), hi(-GREAT, -GREAT, -GREAT);
+    auto grow = [&](const polydem::Vec3& a, const polydem::Vec3& b)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            lo[k] = std::min(lo[k], a[k]);
+            hi[k] = std::max(hi[k], b[k]);
+        }
+    };
+    for (const auto& m : config_.meshes)
+    {
+        const auto bb = polydem::boundingBox(m.mesh);
+        grow(bb.first, bb.second);
+    }
+    for (const auto& ins : insertions_)
+    {
+        const auto bb = ins.region.bounds();
+        grow(bb.first, bb.second);
+    }
+    if (config_.domainMax.x < 1e29)
+    {
+        grow(config_.domainMin, config_.domainMax);
+    }
+    if (lo.x > hi.x)
+    {
+        sceneSize_ = 0.1;
+        sceneCentre_ = polydem::Vec3();
+        for (const auto& p : config_.planes)
+        {
+            sceneCentre_ = p.point;
+        }
+        return;
+    }
+    sceneSize_ = std::max(norm(hi - lo), SMALL);
+    sceneCentre_ = 0.5*(lo + hi);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demPropertiesReader::demPropertiesReader(const dictionary& demProperties)
+:
+    dict_(demProperties),
+    stateFormat_(polydem::StateFormat::ascii),
+    writeVtk_(true),
+    reportInterval_(5),
+    sceneSize_(0.1)
+{
+    readGeneral();
+    readContactModel();
+    readMaterials();
+    readInteractions();
+    readParticleTypes();
+    readWalls();
+    readInsertions();
+    readOutput();
+    computeScene();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+polydem::SimulationConfig Foam::demPropertiesReader::configWith
+(
+    const std::vector<bool>& activeWalls,
+    std::vector<int>& wallMap
+) const
+{
+    polydem::SimulationConfig c = config_;
+    c.planes.clear();
+    c.meshes.clear();
+
+    const size_t nPl = config_.planes.size();
+    wallMap.assign(nPl + config_.meshes.size(), -1);
+
+    // Keep planes first, then meshes: the engine's wall numbering
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const wallInfo& w = walls_[k];
+        if (w.isPlane && activeWalls[k])
+        {
+            wallMap[w.index] = int(c.planes.size());
+            c.planes.push_back(config_.planes[w.index]);
+        }
+    }
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const wallInfo& w = walls_[k];
+        if (!w.isPlane && activeWalls[k])
+        {
+            c.meshes.push_back(config_.meshes[w.index]);
+            wallMap[nPl + w.index] = -2 - int(c.meshes.size() - 1);
+        }
+    }
+    // Mesh indices come after the kept planes
+    for (size_t k = nPl; k < wallMap.size(); ++k)
+    {
+        if (wallMap[k] <= -2)
+        {
+            wallMap[k] = int(c.planes.size()) + (-2 - wallMap[k]);
+        }
+    }
+    return c;
+}
+
+
+// ************************************************************************* //

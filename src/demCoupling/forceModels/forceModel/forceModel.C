@@ -1,0 +1,45 @@
+#include "forceModel.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(forceModel, 0);
+    defineRunTimeSelectionTable(forceModel, dictionary);
+}
+
+
+Foam::forceModel::forceModel
+(
+    const word& modelType,
+    const dictionary& dict,
+    const demCloud& cloud
+)
+:
+    cloud_(cloud),
+    coeffs_(dict.subOrEmptyDict(modelType + "Coeffs"))
+{}
+
+
+Foam::autoPtr<Foam::forceModel> Foam::forceModel::New
+(
+    const word& modelType,
+    const dictionary& dict,
+    const demCloud& cloud
+)
+{
+    Info<< "    force model: " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "forceModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<forceModel>(cstrIter()(modelType, dict, cloud));
+}
