@@ -1,0 +1,140 @@
+#include "polyDEMBackend.H"
+#include "addToRunTimeSelectionTable.H"
+#include "polyDEM/Error.hpp"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(polyDEMBackend, 0);
+    addToRunTimeSelectionTable(demBackend, polyDEMBackend, dictionary);
+}
+
+
+Foam::polyDEMBackend::polyDEMBackend
+(
+    const word& modelType,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    demBackend(runTime),
+    demProperties_
+    (
+        IOobject
+        (
+            "demProperties",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    dem_()
+{
+    try
+    {
+        dem_.reset(new demSimulation(runTime, demProperties_));
+    }
+    catch (const polydem::Error& err)
+    {
+        demPropertiesReader::reportError(err, demProperties_);
+    }
+}
+
+
+Foam::polyDEMBackend::~polyDEMBackend()
+{}
+
+
+Foam::scalar Foam::polyDEMBackend::timeStep() const
+{
+    return dem_->input().config().timeStep;
+}
+
+
+Foam::label Foam::polyDEMBackend::stepsPerFluidStep() const
+{
+    return label(std::llround(runTime_.deltaTValue()/timeStep()));
+}
+
+
+Foam::wordList Foam::polyDEMBackend::typeNames() const
+{
+    const auto& types = dem_->input().config().types;
+    wordList names(types.size());
+    forAll(names, i)
+    {
+        names[i] = word(types[i].name);
+    }
+    return names;
+}
+
+
+Foam::scalar Foam::polyDEMBackend::typeDensity(label type) const
+{
+    const auto& cfg = dem_->input().config();
+    return cfg.materials[cfg.types[type].material].density;
+}
+
+
+void Foam::polyDEMBackend::particles(demParticleArrays& p) const
+{
+    const polydem::ParticleState s = dem_->system().engine().particles();
+    const label n = s.size();
+    p.setSize(n);
+    for (label i = 0; i < n; ++i)
+    {
+        p.id[i] = label(s.id[i]);
+        p.type[i] = s.type[i];
+        p.radius[i] = s.radius[i];
+        p.mass[i] = s.mass[i];
+        p.position[i] = demPropertiesReader::toVector(s.position[i]);
+        p.velocity[i] = demPropertiesReader::toVector(s.velocity[i]);
+        p.omega[i] = demPropertiesReader::toVector(s.omega[i]);
+    }
+}
+
+
+void Foam::polyDEMBackend::setForces(const List<vector>& F)
+{
+    std::vector<polydem::Vec3> force(F.size());
+    forAll(F, i)
+    {
+        force[i] = demPropertiesReader::toVec3(F[i]);
+    }
+    try
+    {
+        dem_->system().engine().setExternalForces(force, {});
+    }
+    catch (const polydem::Error& err)
+    {
+        FatalErrorInFunction
+            << "polyDEM refused the fluid forces: " << err.what()
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::polyDEMBackend::evolve()
+{
+    try
+    {
+        dem_->evolve();
+        dem_->sample();
+    }
+    catch (const polydem::Error& err)
+    {
+        demPropertiesReader::reportError(err, demProperties_);
+    }
+}
+
+
+void Foam::polyDEMBackend::write()
+{
+    dem_->write();
+}
+
+
+Foam::scalar Foam::polyDEMBackend::time() const
+{
+    return dem_->system().engine().time();
+}

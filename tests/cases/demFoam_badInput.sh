@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# demFoam must stop (non-zero exit) on bad input with a message naming the
+# file at fault (demProperties, or the STL) and the entry.
+#
+#   demFoam_badInput.sh missingKey|illTypedKey|unknownLaw|missingStl|
+#                       malformedStl|unstableTimeStep|indivisibleDeltaT
+. "$(dirname "$0")/common.sh"
+
+kind="$1"
+copyCase settlingSpheres
+props=constant/demProperties
+
+addMeshWall()
+{
+    setEntry $props walls/box "{ type mesh; file \"$1\"; material steel; }"
+}
+
+case "$kind" in
+missingKey)
+    sed -i '/^timeStep/d' $props
+    expectFile="constant/demProperties"; expectEntry="timeStep" ;;
+illTypedKey)
+    sed -i 's/^timeStep .*/timeStep        abc;/' $props
+    expectFile="constant/demProperties"; expectEntry="timeStep" ;;
+unknownLaw)
+    setEntry $props contactModel/law frictionlessMagic
+    expectFile="constant/demProperties"; expectEntry="law"
+    # the valid names are listed too
+    expectAlso="hertzMindlin" ;;
+missingStl)
+    addMeshWall missing.stl
+    expectFile="constant/triSurface/missing.stl"; expectEntry="walls/box/file" ;;
+malformedStl)
+    mkdir -p constant/triSurface
+    printf 'solid broken\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 zero\n' \
+        > constant/triSurface/broken.stl
+    head -c 300 /dev/urandom >> constant/triSurface/broken.stl
+    addMeshWall broken.stl
+    expectFile="constant/triSurface/broken.stl"; expectEntry="walls/box/file" ;;
+unstableTimeStep)
+    # 1e-3 s is far above 20 % of the Rayleigh time (~4e-5 s) of these beads
+    setEntry $props timeStep 1e-3
+    expectFile="constant/demProperties"; expectEntry="timeStep"
+    expectAlso="stability" ;;
+indivisibleDeltaT)
+    # deltaT 0.002 / 3e-5 = 66.67 steps
+    setEntry $props timeStep 3e-5
+    expectFile="constant/demProperties"; expectEntry="timeStep"
+    expectAlso="deltaT" ;;
+*)
+    fail "unknown bad-input kind '$kind'" ;;
+esac
+
+setEntry system/controlDict endTime 0.01
+demFoam > log.demFoam 2>&1
+rc=$?
+sed -n '/FOAM FATAL/,/FOAM exiting/p' log.demFoam
+
+[ "$rc" -ne 0 ] || fail "demFoam exited with 0 on bad input ($kind)"
+grep -q "FOAM FATAL" log.demFoam || { tail -20 log.demFoam; fail "no FOAM FATAL message ($kind)"; }
+grep -qF "$testDir/settlingSpheres/$expectFile" log.demFoam \
+    || fail "message does not name the file $expectFile ($kind)"
+grep -qF "$expectEntry" log.demFoam \
+    || fail "message does not name the entry $expectEntry ($kind)"
+if [ -n "$expectAlso" ]
+then
+    grep -qiF "$expectAlso" log.demFoam || fail "message does not say '$expectAlso' ($kind)"
+fi
+echo "PASS: $kind: exit $rc, names $expectFile and $expectEntry"

@@ -1,0 +1,218 @@
+"""Hedra validation helpers: write small demPimpleFoam cases, run them, read
+their results. Used by the validation scripts in this folder (CTest)."""
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+HEADER = """FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    object      {obj};
+}}
+"""
+
+
+def foamfile(path, obj, body, cls="dictionary"):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(HEADER.format(cls=cls, obj=obj))
+        f.write(body)
+
+
+def block_mesh(case, lo, hi, n, patches):
+    """Box mesh lo..hi with n cells; patches: dict name -> (type, faces)
+    faces from xmin xmax ymin ymax zmin zmax."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    faces = {
+        "xmin": "(0 4 7 3)", "xmax": "(1 2 6 5)",
+        "ymin": "(0 1 5 4)", "ymax": "(3 7 6 2)",
+        "zmin": "(0 3 2 1)", "zmax": "(4 5 6 7)",
+    }
+    bnd = ""
+    for name, (ptype, sides) in patches.items():
+        fl = " ".join(faces[s] for s in sides)
+        bnd += f"    {name} {{ type {ptype}; faces ({fl}); }}\n"
+    body = f"""convertToMeters 1;
+vertices
+(
+    ({x0} {y0} {z0}) ({x1} {y0} {z0}) ({x1} {y1} {z0}) ({x0} {y1} {z0})
+    ({x0} {y0} {z1}) ({x1} {y0} {z1}) ({x1} {y1} {z1}) ({x0} {y1} {z1})
+);
+blocks ( hex (0 1 2 3 4 5 6 7) ({n[0]} {n[1]} {n[2]}) simpleGrading (1 1 1) );
+edges ();
+boundary
+(
+{bnd});
+"""
+    foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict", body)
+
+
+def control_dict(case, end, dt, write, extra=""):
+    body = f"""application demPimpleFoam;
+startFrom latestTime;
+startTime 0;
+stopAt endTime;
+endTime {end};
+deltaT {dt};
+writeControl runTime;
+writeInterval {write};
+purgeWrite 0;
+writeFormat ascii;
+writePrecision 12;
+writeCompression off;
+timeFormat general;
+timePrecision 8;
+runTimeModifiable false;
+{extra}
+"""
+    foamfile(os.path.join(case, "system/controlDict"), "controlDict", body)
+
+
+def schemes_solution(case, nCorr=2, nOuter=1, pTol=1e-10):
+    foamfile(os.path.join(case, "system/fvSchemes"), "fvSchemes", """
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    default Gauss linear;
+    div(alphaPhi,U) Gauss limitedLinearV 1;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+""")
+    foamfile(os.path.join(case, "system/fvSolution"), "fvSolution", f"""
+solvers
+{{
+    p {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol 0.01; }}
+    pFinal {{ $p; relTol 0; }}
+    "(U|k|epsilon|omega)" {{ solver smoothSolver; smoother symGaussSeidel; tolerance 1e-10; relTol 0; }}
+    "(U|k|epsilon|omega)Final" {{ $U; relTol 0; }}
+}}
+PIMPLE
+{{
+    momentumPredictor yes;
+    nOuterCorrectors {nOuter};
+    nCorrectors {nCorr};
+    nNonOrthogonalCorrectors 0;
+    pRefCell 0;
+    pRefValue 0;
+}}
+""")
+    foamfile(os.path.join(case, "system/decomposeParDict"), "decomposeParDict", """
+numberOfSubdomains 2;
+method simple;
+coeffs { n (1 1 2); }
+""")
+
+
+def transport(case, nu, rho, g=(0, 0, -9.81)):
+    foamfile(os.path.join(case, "constant/transportProperties"),
+             "transportProperties",
+             f"transportModel Newtonian;\nnu {nu};\nrho {rho};\n")
+    foamfile(os.path.join(case, "constant/turbulenceProperties"),
+             "turbulenceProperties", "simulationType laminar;\n")
+    foamfile(os.path.join(case, "constant/g"), "g",
+             f"dimensions [0 1 -2 0 0 0 0];\nvalue ({g[0]} {g[1]} {g[2]});\n",
+             cls="uniformDimensionedVectorField")
+
+
+def fields(case, Ubcs, pbcs, time="0"):
+    def bc(d):
+        return "".join(f"    {k} {{ {v} }}\n" for k, v in d.items())
+    foamfile(os.path.join(case, time, "U"), "U",
+             f"dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+             f"boundaryField\n{{\n{bc(Ubcs)}}}\n", cls="volVectorField")
+    foamfile(os.path.join(case, time, "p"), "p",
+             f"dimensions [0 2 -2 0 0 0 0];\ninternalField uniform 0;\n"
+             f"boundaryField\n{{\n{bc(pbcs)}}}\n", cls="volScalarField")
+
+
+def dem_properties(case, dt, density, diameter, walls, insertion,
+                   E=5e6, restitution=0.5, friction=0.5, gravity=(0, 0, -9.81)):
+    wall_txt = ""
+    for name, (point, normal) in walls.items():
+        wall_txt += (f"    {name} {{ type plane; point ({point[0]} {point[1]} {point[2]});"
+                     f" normal ({normal[0]} {normal[1]} {normal[2]}); material mat; }}\n")
+    body = f"""device cpu;
+timeStep {dt};
+gravity ({gravity[0]} {gravity[1]} {gravity[2]});
+contactModel {{ law hertzMindlin; rolling none; }}
+materials {{ mat {{ youngsModulus {E}; poissonsRatio 0.3; density {density}; }} }}
+interactions {{ default {{ restitution {restitution}; friction {friction}; rollingFriction 0; rollingDamping 0.3; }} }}
+particleTypes {{ beads {{ shape sphere; material mat; diameter {diameter}; }} }}
+walls
+{{
+{wall_txt}}}
+insertion
+{{
+{insertion}
+}}
+output {{ format ascii; vtk false; }}
+"""
+    foamfile(os.path.join(case, "constant/demProperties"), "demProperties", body)
+
+
+def random_fill(name, number, lo, hi, velocity=(0, 0, 0), seed=1):
+    return f"""    {name}
+    {{
+        type randomFill; particleType beads; number {number}; seed {seed};
+        region {{ type box; min ({lo[0]} {lo[1]} {lo[2]}); max ({hi[0]} {hi[1]} {hi[2]}); }}
+        velocity ({velocity[0]} {velocity[1]} {velocity[2]});
+    }}"""
+
+
+def coupling(case, text):
+    foamfile(os.path.join(case, "constant/couplingProperties"),
+             "couplingProperties", text)
+
+
+def env():
+    e = dict(os.environ)
+    return e
+
+
+def run(cmd, case, log, check=True, timeout=600):
+    with open(os.path.join(case, log), "w") as f:
+        r = subprocess.run(cmd, cwd=case, stdout=f, stderr=subprocess.STDOUT,
+                           shell=isinstance(cmd, str), timeout=timeout)
+    if check and r.returncode != 0:
+        print(open(os.path.join(case, log)).read()[-3000:])
+        raise SystemExit(f"FAILED: {cmd} (exit {r.returncode}), log {case}/{log}")
+    return r.returncode
+
+
+def read_summary(case):
+    """Rows of postProcessing/demCloud/<t0>/summary.dat (latest start)."""
+    base = os.path.join(case, "postProcessing/demCloud")
+    rows = []
+    for t in sorted(os.listdir(base), key=float):
+        with open(os.path.join(base, t, "summary.dat")) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                rows.append([float(x) for x in line.split()])
+    return rows
+
+
+COLS = dict(t=0, n=1, nOut=2, F=slice(3, 6), Pc=slice(6, 9), Sf=slice(9, 12),
+            relErr=12, Up=slice(13, 16), xp=slice(16, 19), alphaMin=19)
+
+
+def workdir(name):
+    base = os.environ.get("HEDRA_TEST_TMP", tempfile.gettempdir())
+    d = tempfile.mkdtemp(prefix=f"hedra-{name}-", dir=base)
+    return d
+
+
+def check(label, value, ref, tol, results):
+    err = abs(value - ref) / abs(ref) if ref != 0 else abs(value)
+    ok = err <= tol
+    results.append(ok)
+    print(f"{'PASS' if ok else 'FAIL'}: {label}: {value:.6g} vs {ref:.6g}"
+          f" (rel. error {err:.3g}, tolerance {tol:g})")
+    return ok
