@@ -103,8 +103,8 @@ Snapshot packedStart()
 {
     System s(packedCase("cpu"));
     // Polyhedra cost more per contact: fewer of them, a lower fill
-    const auto seeds = randomFill(FillRegion::box(Vec3(0, 0, 0), Vec3(0.03, 0.03, polyhedra ? 0.06 : 0.15)),
-                                  SizeDistribution::uniform(0.0035, 0.0045), polyhedra ? 300 : 800, 5);
+    const auto seeds = randomFill(FillRegion::box(Vec3(0, 0, 0), Vec3(0.03, 0.03, polyhedra ? 0.03 : 0.15)),
+                                  SizeDistribution::uniform(0.0035, 0.0045), polyhedra ? 150 : 800, 5);
     std::vector<Vec3> x;
     std::vector<double> r;
     for (const auto& q : seeds) { x.push_back(q.position); r.push_back(q.radius); }
@@ -123,7 +123,7 @@ Snapshot packedStart()
         s.completeSphereProperties(st.particles);
     }
     s.initialise(st);
-    s.advance(polyhedra ? 40000 : 15000);
+    s.advance(polyhedra ? 20000 : 15000);
     return s.engine().snapshot();
 }
 

@@ -579,7 +579,7 @@ void Foam::demCloud::computeForces
         {
             s += KU[c] - K[c]*U_[c];
         }
-        fluidSide += V[c]*s;
+        fluidSide += s;
     }
     reduce(fluidSide, sumOp<vector>());
     lastParticleMomentum_ = particleSide;

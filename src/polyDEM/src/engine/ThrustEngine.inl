@@ -399,6 +399,39 @@ struct TransferPairHistory
     }
 };
 
+//- For every slot (i, k) of the full lists: the slot where the pair is
+//  evaluated, which is in the list of the particle of smaller id
+struct LinkOwnerSlots
+{
+    const int64_t* id;
+    const int* nbrCount;
+    const int* nbr;
+    int maxNbr;
+    int* ownerSlot;
+
+    PD_HD void operator()(int i) const
+    {
+        for (int k = 0; k < nbrCount[i]; ++k)
+        {
+            const size_t s = size_t(i) * maxNbr + k;
+            const int j = nbr[s];
+            if (id[i] < id[j])
+            {
+                ownerSlot[s] = int(s);
+                continue;
+            }
+            for (int l = 0; l < nbrCount[j]; ++l)
+            {
+                if (nbr[size_t(j) * maxNbr + l] == i)
+                {
+                    ownerSlot[s] = int(size_t(j) * maxNbr + l);
+                    break;
+                }
+            }
+        }
+    }
+};
+
 // ---------------------------------------------------------------------------
 // Forces
 // ---------------------------------------------------------------------------
@@ -453,6 +486,131 @@ PD_HD inline OverlapResult sphereHalfSpaceOverlap(const Vec3& x, double r, const
     return res;
 }
 
+//- Evaluates every contact once, in the list of its particle of smaller id,
+//  and leaves the force and both torques in the pair's slot for ForceKernel
+struct PairKernel
+{
+    ParticleView p;
+    LawView law;
+    const int* nbrCount;
+    const int* nbr;
+    int maxNbr;
+    const int* ownerSlot;
+    Vec3* pairXi;
+    Vec3* pairMr;
+    unsigned char* pairTouching;
+    Vec3* pairForce;
+    Vec3* pairTorqueA;
+    Vec3* pairTorqueB;
+
+    //- Volumetric overlap of particles a and b, normal from a to b
+    PD_HD OverlapResult pairOverlap(int a, int b) const
+    {
+        const int sa = law.typeShape[p.type[a]];
+        const int sb = law.typeShape[p.type[b]];
+        if (sa < 0 && sb < 0)
+        {
+            return sphereSphereOverlap(p.pos[a], p.radius[a], p.pos[b], p.radius[b]);
+        }
+        if (sa >= 0 && sb >= 0)
+        {
+            return polyhedronOverlap(law.shapes.shape(sa), p.pos[a], p.q[a],
+                                     law.shapes.shape(sb), p.pos[b], p.q[b]);
+        }
+        if (sa >= 0)
+        {
+            return polyhedronSphereOverlap(law.shapes.shape(sa), p.pos[a], p.q[a], p.pos[b], p.radius[b]);
+        }
+        OverlapResult r = polyhedronSphereOverlap(law.shapes.shape(sb), p.pos[b], p.q[b], p.pos[a], p.radius[a]);
+        r.normal = -r.normal;
+        r.areaVector = -r.areaVector;
+        return r;
+    }
+
+    PD_HD void store(size_t s, const ContactResult& res, const Vec3& armA, const Vec3& armB) const
+    {
+        pairTouching[s] = 1;
+        pairForce[s] = res.force;
+        pairTorqueA[s] = cross(armA, res.force) + res.rollingTorque;
+        pairTorqueB[s] = cross(armB, -res.force) - res.rollingTorque;
+    }
+
+    PD_HD void operator()(int i) const
+    {
+        const int cnt = nbrCount[i];
+        for (int k = 0; k < cnt; ++k)
+        {
+            const size_t s = size_t(i) * maxNbr + k;
+            if (size_t(ownerSlot[s]) != s) continue;  // evaluated by the other particle
+            const int a = i;
+            const int b = nbr[s];
+            if (law.law.law == ContactLaw::overlapVolume)
+            {
+                // Bounding spheres first: the exact overlap is the costly part
+                const double reach = p.radius[a] + p.radius[b];
+                const OverlapResult ov = normSqr(p.pos[b] - p.pos[a]) < reach * reach
+                                       ? pairOverlap(a, b) : OverlapResult();
+                if (!ov.touching)
+                {
+                    pairXi[s] = Vec3();
+                    pairMr[s] = Vec3();
+                    pairTouching[s] = 0;
+                continue;
+                }
+                
+                ContactKinematics kin;
+                kin.normal = ov.normal;
+                kin.overlap = ov.volume;
+                kin.contactArea = ov.contactArea;
+                const double ra = p.radius[a], rb = p.radius[b];
+                kin.rStar = ra * rb / (ra + rb);
+                const double ma = p.mass[a], mb = p.mass[b];
+                kin.mStar = ma * mb / (ma + mb);
+                const double Ia = rollingInertiaOf(p.inertia[a].x, ma, ra);
+                const double Ib = rollingInertiaOf(p.inertia[b].x, mb, rb);
+                kin.rollingInertia = Ia * Ib / (Ia + Ib);
+                const Vec3 armA = ov.centroid - p.pos[a];
+                const Vec3 armB = ov.centroid - p.pos[b];
+                kin.relVelocity = (p.vel[a] + cross(p.omega[a], armA)) - (p.vel[b] + cross(p.omega[b], armB));
+                kin.relOmega = p.omega[a] - p.omega[b];
+                const ContactResult res = evaluateContact(law.law, law.pair(law.typeMaterial[p.type[a]],
+                                                          law.typeMaterial[p.type[b]]), kin, pairXi[s], pairMr[s]);
+                store(s, res, armA, armB);
+                continue;
+            }
+            const Vec3 d = p.pos[b] - p.pos[a];
+            const double dist = norm(d);
+            const double ra = p.radius[a], rb = p.radius[b];
+            const double overlap = ra + rb - dist;
+            if (overlap <= 0 || dist <= 0)
+            {
+                pairXi[s] = Vec3();
+                pairMr[s] = Vec3();
+                pairTouching[s] = 0;
+                continue;
+            }
+            
+            ContactKinematics kin;
+            kin.normal = d / dist;
+            kin.overlap = overlap;
+            kin.rStar = ra * rb / (ra + rb);
+            const double ma = p.mass[a], mb = p.mass[b];
+            kin.mStar = ma * mb / (ma + mb);
+            const double Ia = rollingInertiaOf(p.inertia[a].x, ma, ra);
+            const double Ib = rollingInertiaOf(p.inertia[b].x, mb, rb);
+            kin.rollingInertia = Ia * Ib / (Ia + Ib);
+            const Vec3 armA = (ra - 0.5 * overlap) * kin.normal;
+            const Vec3 armB = -(rb - 0.5 * overlap) * kin.normal;
+            kin.relVelocity = (p.vel[a] + cross(p.omega[a], armA)) - (p.vel[b] + cross(p.omega[b], armB));
+            kin.relOmega = p.omega[a] - p.omega[b];
+            const int ma_ = law.typeMaterial[p.type[a]];
+            const int mb_ = law.typeMaterial[p.type[b]];
+            const ContactResult res = evaluateContact(law.law, law.pair(ma_, mb_), kin, pairXi[s], pairMr[s]);
+            store(s, res, armA, armB);
+        }
+    }
+};
+
 struct ForceKernel
 {
     ParticleView p;
@@ -460,12 +618,14 @@ struct ForceKernel
     Vec3 gravity;
     double time;
 
-    // particle-particle
+    // particle-particle results of PairKernel
     const int* nbrCount;
-    const int* nbr;
     int maxNbr;
-    Vec3* pairXi;
-    Vec3* pairMr;
+    const int* ownerSlot;
+    const unsigned char* pairTouching;
+    const Vec3* pairForce;
+    const Vec3* pairTorqueA;
+    const Vec3* pairTorqueB;
     int* contactCount;
 
     // planes: per particle nPlanes slots
@@ -535,30 +695,6 @@ struct ForceKernel
         T += cross(arm, res.force) + res.rollingTorque;
     }
 
-    //- Volumetric overlap of particles a and b, normal from a to b
-    PD_HD OverlapResult pairOverlap(int a, int b) const
-    {
-        const int sa = law.typeShape[p.type[a]];
-        const int sb = law.typeShape[p.type[b]];
-        if (sa < 0 && sb < 0)
-        {
-            return sphereSphereOverlap(p.pos[a], p.radius[a], p.pos[b], p.radius[b]);
-        }
-        if (sa >= 0 && sb >= 0)
-        {
-            return polyhedronOverlap(law.shapes.shape(sa), p.pos[a], p.q[a],
-                                     law.shapes.shape(sb), p.pos[b], p.q[b]);
-        }
-        if (sa >= 0)
-        {
-            return polyhedronSphereOverlap(law.shapes.shape(sa), p.pos[a], p.q[a], p.pos[b], p.radius[b]);
-        }
-        OverlapResult r = polyhedronSphereOverlap(law.shapes.shape(sb), p.pos[b], p.q[b], p.pos[a], p.radius[a]);
-        r.normal = -r.normal;
-        r.areaVector = -r.areaVector;
-        return r;
-    }
-
     PD_HD void operator()(int i) const
     {
         const double m = p.mass[i];
@@ -569,101 +705,29 @@ struct ForceKernel
 
         const Vec3 xi_ = p.pos[i];
         const double ri = p.radius[i];
-        const int64_t idi = p.id[i];
-        const int mi = law.typeMaterial[p.type[i]];
 
-        // Particle-particle: body 1 is the particle of smaller id
+        // Particle-particle: sum the pair results. A pair is evaluated once, in
+        // the list of its particle of smaller id (the owner); the other side
+        // reads the owner's slot and takes the opposite force.
         int touching = 0;
         const int cnt = nbrCount[i];
         for (int k = 0; k < cnt; ++k)
         {
             const size_t s = size_t(i) * maxNbr + k;
-            const int j = nbr[s];
-            const bool iFirst = idi < p.id[j];
-            const int a = iFirst ? i : j;
-            const int b = iFirst ? j : i;
-            if (law.law.law == ContactLaw::overlapVolume)
-            {
-                // Bounding spheres first: the exact overlap is the costly part
-                const double reach = p.radius[a] + p.radius[b];
-                const OverlapResult ov = normSqr(p.pos[b] - p.pos[a]) < reach * reach
-                                       ? pairOverlap(a, b) : OverlapResult();
-                if (!ov.touching)
-                {
-                    pairXi[s] = Vec3();
-                    pairMr[s] = Vec3();
-                    continue;
-                }
-                ++touching;
-                ContactKinematics kin;
-                kin.normal = ov.normal;
-                kin.overlap = ov.volume;
-                kin.contactArea = ov.contactArea;
-                const double ra = p.radius[a], rb = p.radius[b];
-                kin.rStar = ra * rb / (ra + rb);
-                const double ma = p.mass[a], mb = p.mass[b];
-                kin.mStar = ma * mb / (ma + mb);
-                const double Ia = rollingInertiaOf(p.inertia[a].x, ma, ra);
-                const double Ib = rollingInertiaOf(p.inertia[b].x, mb, rb);
-                kin.rollingInertia = Ia * Ib / (Ia + Ib);
-                const Vec3 armA = ov.centroid - p.pos[a];
-                const Vec3 armB = ov.centroid - p.pos[b];
-                kin.relVelocity = (p.vel[a] + cross(p.omega[a], armA)) - (p.vel[b] + cross(p.omega[b], armB));
-                kin.relOmega = p.omega[a] - p.omega[b];
-                const ContactResult res = evaluateContact(law.law, law.pair(law.typeMaterial[p.type[a]],
-                                                          law.typeMaterial[p.type[b]]), kin, pairXi[s], pairMr[s]);
-                if (iFirst)
-                {
-                    F += res.force;
-                    T += cross(armA, res.force) + res.rollingTorque;
-                }
-                else
-                {
-                    F -= res.force;
-                    T += cross(armB, -res.force) - res.rollingTorque;
-                }
-                continue;
-            }
-            const Vec3 d = p.pos[b] - p.pos[a];
-            const double dist = norm(d);
-            const double ra = p.radius[a], rb = p.radius[b];
-            const double overlap = ra + rb - dist;
-            if (overlap <= 0 || dist <= 0)
-            {
-                pairXi[s] = Vec3();
-                pairMr[s] = Vec3();
-                continue;
-            }
+            const size_t o = size_t(ownerSlot[s]);
+            if (!pairTouching[o]) continue;
             ++touching;
-            ContactKinematics kin;
-            kin.normal = d / dist;
-            kin.overlap = overlap;
-            kin.rStar = ra * rb / (ra + rb);
-            const double ma = p.mass[a], mb = p.mass[b];
-            kin.mStar = ma * mb / (ma + mb);
-            const double Ia = rollingInertiaOf(p.inertia[a].x, ma, ra);
-            const double Ib = rollingInertiaOf(p.inertia[b].x, mb, rb);
-            kin.rollingInertia = Ia * Ib / (Ia + Ib);
-            const Vec3 armA = (ra - 0.5 * overlap) * kin.normal;
-            const Vec3 armB = -(rb - 0.5 * overlap) * kin.normal;
-            kin.relVelocity = (p.vel[a] + cross(p.omega[a], armA)) - (p.vel[b] + cross(p.omega[b], armB));
-            kin.relOmega = p.omega[a] - p.omega[b];
-            const int ma_ = law.typeMaterial[p.type[a]];
-            const int mb_ = law.typeMaterial[p.type[b]];
-            const ContactResult res = evaluateContact(law.law, law.pair(ma_, mb_), kin, pairXi[s], pairMr[s]);
-            if (iFirst)
+            if (o == s)
             {
-                F += res.force;
-                T += cross(armA, res.force) + res.rollingTorque;
+                F += pairForce[o];
+                T += pairTorqueA[o];
             }
             else
             {
-                F -= res.force;
-                T += cross(armB, -res.force) - res.rollingTorque;
+                F -= pairForce[o];
+                T += pairTorqueB[o];
             }
         }
-        (void)ri;
-        (void)mi;
         contactCount[i] = touching;
 
         int walls = 0;
@@ -1505,6 +1569,18 @@ private:
             thrust::for_each(thrust::device, first, first + n, transfer);
         }
 
+        if (size_t(n) * maxNbr_ > size_t(2147483647))
+        {
+            throw Error("neighbour lists exceed 2^31 slots: too many particles or neighbours per particle");
+        }
+        ownerSlot_.assign(size_t(n) * maxNbr_, 0);
+        thrust::for_each(thrust::device, first, first + n,
+                         LinkOwnerSlots{ptr(id_), ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(ownerSlot_)});
+        pairTouching_.assign(size_t(n) * maxNbr_, 0);
+        pairForce_.resize(size_t(n) * maxNbr_);
+        pairTorqueA_.resize(size_t(n) * maxNbr_);
+        pairTorqueB_.resize(size_t(n) * maxNbr_);
+
         contactCount_.assign(n, 0);
         wallContactCount_.assign(n, 0);
         if (nPl > 0)
@@ -1589,11 +1665,17 @@ private:
         k.law = lawView();
         k.gravity = config_.gravity;
         k.time = time_;
+        const auto first = thrust::counting_iterator<int>(0);
+        PairKernel pk{k.p, k.law, ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(ownerSlot_), ptr(pairXi_), ptr(pairMr_),
+                      ptr(pairTouching_), ptr(pairForce_), ptr(pairTorqueA_), ptr(pairTorqueB_)};
+        thrust::for_each(thrust::device, first, first + n, pk);
         k.nbrCount = ptr(nbrCount_);
-        k.nbr = ptr(nbr_);
         k.maxNbr = maxNbr_;
-        k.pairXi = ptr(pairXi_);
-        k.pairMr = ptr(pairMr_);
+        k.ownerSlot = ptr(ownerSlot_);
+        k.pairTouching = ptr(pairTouching_);
+        k.pairForce = ptr(pairForce_);
+        k.pairTorqueA = ptr(pairTorqueA_);
+        k.pairTorqueB = ptr(pairTorqueB_);
         k.contactCount = ptr(contactCount_);
         k.planes = nPl ? ptr(planes_) : nullptr;
         k.nPlanes = nPl;
@@ -1609,7 +1691,6 @@ private:
         k.cellTriangles = nMesh && !meshCellTri_.empty() ? ptr(meshCellTri_) : nullptr;
         k.meshSlots = nMesh ? ptr(meshSlots_) : nullptr;
         k.wallContactCount = ptr(wallContactCount_);
-        const auto first = thrust::counting_iterator<int>(0);
         thrust::for_each(thrust::device, first, first + n, k);
     }
 
@@ -1718,6 +1799,9 @@ private:
     dvec<int> nbrCount_, nbr_, contactCount_, wallContactCount_;
     dvec<int64_t> pairPartner_;
     dvec<Vec3> pairXi_, pairMr_;
+    dvec<int> ownerSlot_;
+    dvec<unsigned char> pairTouching_;
+    dvec<Vec3> pairForce_, pairTorqueA_, pairTorqueB_;
 
     dvec<PlaneDevice> planes_;
     dvec<Vec3> planeXi_, planeMr_;
