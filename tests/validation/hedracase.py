@@ -72,7 +72,7 @@ runTimeModifiable false;
     foamfile(os.path.join(case, "system/controlDict"), "controlDict", body)
 
 
-def schemes_solution(case, nCorr=2, nOuter=1, pTol=1e-10):
+def schemes_solution(case, nCorr=2, nOuter=1, pTol=1e-10, pRelTol=0.01):
     foamfile(os.path.join(case, "system/fvSchemes"), "fvSchemes", """
 ddtSchemes { default Euler; }
 gradSchemes { default Gauss linear; }
@@ -84,11 +84,12 @@ divSchemes
 laplacianSchemes { default Gauss linear corrected; }
 interpolationSchemes { default linear; }
 snGradSchemes { default corrected; }
+wallDist { method meshWave; }
 """)
     foamfile(os.path.join(case, "system/fvSolution"), "fvSolution", f"""
 solvers
 {{
-    p {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol 0.01; }}
+    p {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol {pRelTol}; }}
     pFinal {{ $p; relTol 0; }}
     "(U|k|epsilon|omega)" {{ solver smoothSolver; smoother symGaussSeidel; tolerance 1e-10; relTol 0; }}
     "(U|k|epsilon|omega)Final" {{ $U; relTol 0; }}
@@ -203,10 +204,28 @@ COLS = dict(t=0, n=1, nOut=2, F=slice(3, 6), Pc=slice(6, 9), Sf=slice(9, 12),
             relErr=12, Up=slice(13, 16), xp=slice(16, 19), alphaMin=19)
 
 
+_workdirs = []
+
+
 def workdir(name):
     base = os.environ.get("HEDRA_TEST_TMP", tempfile.gettempdir())
     d = tempfile.mkdtemp(prefix=f"hedra-{name}-", dir=base)
+    _workdirs.append(d)
     return d
+
+
+def finish(results):
+    """Exit 0 if all passed (removing the case folders unless HEDRA_KEEP is
+    set), else 1 keeping them for inspection."""
+    import sys
+    ok = bool(results) and all(results)
+    if ok and not os.environ.get("HEDRA_KEEP"):
+        for d in _workdirs:
+            shutil.rmtree(d, ignore_errors=True)
+            shutil.rmtree(d + "-np2", ignore_errors=True)
+    elif not ok:
+        print("case folders kept:", " ".join(_workdirs))
+    sys.exit(0 if ok else 1)
 
 
 def check(label, value, ref, tol, results):

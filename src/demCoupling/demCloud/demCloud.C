@@ -84,6 +84,7 @@ Foam::demCloud::demCloud
     rho_(rho),
     formulation_(couplingFormulation::setI),
     implicit_(true),
+    fluxVelocity_(true),
     backend_(),
     locate_(),
     voidFraction_(),
@@ -142,7 +143,11 @@ Foam::demCloud::demCloud
     summary_(),
     lastParticleMomentum_(Zero),
     lastFluidMomentum_(Zero),
-    nOutside_(0)
+    nOutside_(0),
+    clock_(),
+    timeDem_(0),
+    timeParticles_(0),
+    timeForces_(0)
 {
     Info<< "Reading couplingProperties (demCloud)" << endl;
 
@@ -163,11 +168,16 @@ Foam::demCloud::demCloud
         nSubSteps_ = backend_->stepsPerFluidStep();
         typeNames_ = backend_->typeNames();
         typeDensity_.setSize(typeNames_.size());
+        sphericity_.setSize(typeNames_.size());
+        crosswiseSphericity_.setSize(typeNames_.size());
         forAll(typeDensity_, i)
         {
             typeDensity_[i] = backend_->typeDensity(i);
+            backend_->typeShape(i, sphericity_[i], crosswiseSphericity_[i]);
         }
     }
+    broadcast(sphericity_);
+    broadcast(crosswiseSphericity_);
     broadcast(nSubSteps_);
     broadcast(typeNames_);
     broadcast(typeDensity_);
@@ -205,6 +215,12 @@ Foam::demCloud::demCloud
         needCurlU_ = needCurlU_ || forceNames[i] == "SaffmanMeiLift";
     }
 
+    fluxVelocity_ =
+        readChoice(dict_, "fluidVelocity", {"flux", "cell"}, "flux") == "flux";
+    Info<< "    fluid velocity at the particles: "
+        << (fluxVelocity_ ? "reconstruct(alphaPhi)/voidfraction" : "cell U")
+        << endl;
+
     readShapes();
 
     voidfraction_.oldTime();
@@ -239,10 +255,18 @@ Foam::demCloud::~demCloud()
 
 void Foam::demCloud::readShapes()
 {
+    // Defaults from the back end (1 for spheres, the shape's for polyhedra)
     const label nTypes = typeNames_.size();
-    sphericity_.setSize(nTypes, 1);
-    crosswiseSphericity_.setSize(nTypes, 1);
-    dnByDv_.setSize(nTypes, 1);
+    dnByDv_.setSize(nTypes, scalar(1));
+    forAll(sphericity_, t)
+    {
+        if (sphericity_[t] != 1 || crosswiseSphericity_[t] != 1)
+        {
+            Info<< "    particle type " << typeNames_[t]
+                << " (polyhedron): sphericity " << sphericity_[t]
+                << ", crosswise " << crosswiseSphericity_[t] << endl;
+        }
+    }
 
     const dictionary shapes(dict_.subOrEmptyDict("particleShapes"));
     for (const entry& e : shapes)
@@ -417,11 +441,27 @@ void Foam::demCloud::updateParticles()
 void Foam::demCloud::computeForces
 (
     const volScalarField& nu,
-    const volScalarField& nuEff
+    const volScalarField& nuEff,
+    const surfaceScalarField& alphaPhi
 )
 {
     const label n = particles_.size();
     const scalarField& V = mesh_.V();
+
+    // The fluid velocity the particles see: the cell velocity, or the
+    // superficial velocity reconstructed from the face fluxes divided by the
+    // void fraction (continuity-consistent where alpha jumps, e.g. at the
+    // edges of a packed bed, where the cell-centred U is poor)
+    tmp<volVectorField> tUseen;
+    if (fluxVelocity_)
+    {
+        tUseen = fvc::reconstruct(alphaPhi)/voidfraction_;
+    }
+    else
+    {
+        tUseen = tmp<volVectorField>(U_);
+    }
+    const volVectorField& Useen = tUseen();
 
     // Fluid fields the force models may need
     const volVectorField gradP(fvc::grad(p_));
@@ -453,7 +493,7 @@ void Foam::demCloud::computeForces
         {
             const label c = wCell_[k];
             const scalar w = wWeight_[k];
-            Uf_[i] += w*U_[c];
+            Uf_[i] += w*Useen[c];
             alphaP[i] += w*voidfraction_[c];
             nuP[i] += w*nu[c];
             gradPP[i] += w*gradP[c];
@@ -557,6 +597,12 @@ void Foam::demCloud::computeForces
             K[c] += w*beta_[i];
             KU[c] += w*beta_[i]*Up;
             fE[c] -= w*Fexp;
+            if (implicit_)
+            {
+                // Deferred correction: with the implicit -Ksl U the fluid
+                // gets exactly -beta (Uf - Up) at the coupling time
+                fE[c] += w*beta_[i]*(U_[c] - Uf_[i]);
+            }
             Us[c] += w*volume_[i]*Up;
             solidV[c] += w*volume_[i];
         }
@@ -686,15 +732,23 @@ Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSourceByRho() const
 void Foam::demCloud::evolve
 (
     const volScalarField& nu,
-    const volScalarField& nuEff
+    const volScalarField& nuEff,
+    const surfaceScalarField& alphaPhi
 )
 {
+    const scalar t0 = clock_.elapsedTime();
     if (Pstream::master())
     {
         backend_->evolve();
     }
+    const scalar t1 = clock_.elapsedTime();
     updateParticles();
-    computeForces(nu, nuEff);
+    const scalar t2 = clock_.elapsedTime();
+    computeForces(nu, nuEff, alphaPhi);
+    const scalar t3 = clock_.elapsedTime();
+    timeDem_ += t1 - t0;
+    timeParticles_ += t2 - t1;
+    timeForces_ += t3 - t2;
 
     Info<< "demCloud: " << particles_.size() << " particles";
     if (nOutside_)
@@ -703,7 +757,10 @@ void Foam::demCloud::evolve
     }
     Info<< ", voidfraction min " << gMin(voidfraction_.primitiveField())
         << ", momentum exchange: particles " << lastParticleMomentum_
-        << " fluid " << lastFluidMomentum_ << endl;
+        << " fluid " << lastFluidMomentum_ << nl
+        << "demCloud: cumulative CPU s: DEM " << timeDem_
+        << ", locate+voidfraction " << timeParticles_
+        << ", forces+exchange " << timeForces_ << endl;
 }
 
 

@@ -17,12 +17,13 @@ Foam::polyDEMBackend::polyDEMBackend
 )
 :
     demBackend(runTime),
+    parRunGuard_(),
     demProperties_
     (
         IOobject
         (
             "demProperties",
-            runTime.constant(),
+            runTime.globalPath()/runTime.constant(),
             runTime,
             IOobject::MUST_READ,
             IOobject::NO_WRITE
@@ -38,6 +39,7 @@ Foam::polyDEMBackend::polyDEMBackend
     {
         demPropertiesReader::reportError(err, demProperties_);
     }
+    parRunGuard_.restore();
 }
 
 
@@ -73,6 +75,27 @@ Foam::scalar Foam::polyDEMBackend::typeDensity(label type) const
 {
     const auto& cfg = dem_->input().config();
     return cfg.materials[cfg.types[type].material].density;
+}
+
+
+void Foam::polyDEMBackend::typeShape
+(
+    label type,
+    scalar& sphericity,
+    scalar& crosswiseSphericity
+) const
+{
+    sphericity = 1;
+    crosswiseSphericity = 1;
+    const auto& cfg = dem_->input().config();
+    const auto& t = cfg.types[type];
+    if (t.shape == polydem::ShapeKind::polyhedron && t.shapeIndex >= 0)
+    {
+        const auto& shape = cfg.shapes[t.shapeIndex];
+        sphericity = shape.sphericity;
+        const polydem::Vec3& c = shape.crosswiseSphericity;
+        crosswiseSphericity = (c.x + c.y + c.z)/3;
+    }
 }
 
 

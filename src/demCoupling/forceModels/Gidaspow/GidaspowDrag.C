@@ -39,7 +39,7 @@ Foam::scalar Foam::GidaspowDrag::beta(const particleSample& s) const
         if (Re <= SMALL)
         {
             // Stokes limit written without |Ur|
-            betaVol = 18*s.mu()*(1 - alpha)/sqr(s.d)*pow(alpha, -1.65);
+            betaVol = 18*s.mu()*(1 - alpha)/sqr(s.d)*pow(alpha, -2.65);
         }
     }
     return betaFromVolumetric(s, betaVol);

@@ -56,11 +56,11 @@ void Foam::implicitDiffusionSmoothing::smoothField
      ==
         f
     );
-    // Solver: the fields' own or a default
+    // Linear solver: PCG/DIC to 1e-14 (the matrix is symmetric)
     dictionary solverDict;
-    solverDict.add("solver", "PBiCGStab");
-    solverDict.add("preconditioner", "DILU");
-    solverDict.add("tolerance", 1e-12);
+    solverDict.add("solver", "PCG");
+    solverDict.add("preconditioner", "DIC");
+    solverDict.add("tolerance", 1e-14);
     solverDict.add("relTol", 0);
     eqn.solve(solverDict);
 

@@ -72,7 +72,12 @@ struct ContactResult
 
 //- Evaluate the law and advance the tangential/rolling history in place.
 //  xi, mr: tangential spring displacement and rolling spring torque of this contact.
+#if defined(__CUDACC__)
 PD_HD inline ContactResult evaluateContact
+#else
+// Inlined into the kernels: a call per contact costs more than the law itself
+__attribute__((always_inline)) inline ContactResult evaluateContact
+#endif
 (
     const LawParameters& law,
     const PairCoefficients& pc,

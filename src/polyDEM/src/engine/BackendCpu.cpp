@@ -4,7 +4,7 @@
 
 #include "ThrustEngine.inl"
 
-extern "C" polydem::Engine* polydemCreateEngine()
+extern "C" __attribute__((visibility("default"))) polydem::Engine* polydemCreateEngine()
 {
     return new polydem::cpu::ThrustEngine();
 }

@@ -8,7 +8,7 @@
 
 #include <string>
 
-extern "C" polydem::Engine* polydemCreateEngine()
+extern "C" __attribute__((visibility("default"))) polydem::Engine* polydemCreateEngine()
 {
     int count = 0;
     const cudaError_t err = cudaGetDeviceCount(&count);

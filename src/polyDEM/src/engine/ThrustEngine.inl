@@ -170,27 +170,38 @@ PD_HD inline Vec3 worldInverseInertiaTimes(const Quaternion& q, const Vec3& I, c
     return rotate(q, Vec3(b.x / I.x, b.y / I.y, b.z / I.z));
 }
 
+//- First half kick and drift; returns the squared displacement since the last
+//  neighbour-list build, so that the rebuild check needs no pass of its own
 struct KickDrift
 {
     ParticleView p;
+    const int* typeShape;   //!< -1 for spheres
+    const Vec3* ref;
     double dt;
 
-    PD_HD void operator()(int i) const
+    PD_HD double operator()(int i) const
     {
         const double m = p.mass[i];
-        Vec3 v = p.vel[i] + (0.5 * dt / m) * p.force[i];
-        p.pos[i] += dt * v;
+        const Vec3 v = p.vel[i] + (0.5 * dt / m) * p.force[i];
+        const Vec3 x = p.pos[i] + dt * v;
+        p.pos[i] = x;
         p.vel[i] = v;
 
         const Vec3 I = p.inertia[i];
+        if (typeShape[p.type[i]] < 0)
+        {
+            // A sphere: its orientation changes nothing, so it is not integrated
+            p.omega[i] += (0.5 * dt / I.x) * p.torque[i];
+            return normSqr(x - ref[i]);
+        }
+
         const Quaternion q0 = p.q[i];
         const Vec3 L = worldInertiaTimes(q0, I, p.omega[i]) + (0.5 * dt) * p.torque[i];
-
         Quaternion q1;
         Vec3 w;
         if (I.x == I.y && I.y == I.z)
         {
-            // Sphere-like inertia: omega is constant over the drift
+            // Isotropic inertia (a cube, a regular solid): omega is constant over the drift
             w = L / I.x;
             q1 = normalised(fromRotationVector(dt * w) * q0);
         }
@@ -209,19 +220,21 @@ struct KickDrift
         }
         p.q[i] = q1;
         p.omega[i] = w;
+        return normSqr(x - ref[i]);
     }
 };
 
 struct FinalKick
 {
     ParticleView p;
+    const int* typeShape;
     double dt;
 
     PD_HD void operator()(int i) const
     {
         p.vel[i] += (0.5 * dt / p.mass[i]) * p.force[i];
         const Vec3 I = p.inertia[i];
-        if (I.x == I.y && I.y == I.z)
+        if (typeShape[p.type[i]] < 0)
         {
             p.omega[i] += (0.5 * dt / I.x) * p.torque[i];
         }
@@ -230,17 +243,6 @@ struct FinalKick
             const Vec3 L = worldInertiaTimes(p.q[i], I, p.omega[i]) + (0.5 * dt) * p.torque[i];
             p.omega[i] = worldInverseInertiaTimes(p.q[i], I, L);
         }
-    }
-};
-
-struct DisplacementSqr
-{
-    const Vec3* pos;
-    const Vec3* ref;
-
-    PD_HD double operator()(int i) const
-    {
-        return normSqr(pos[i] - ref[i]);
     }
 };
 
@@ -315,19 +317,21 @@ struct BuildNeighbours
     Grid grid;
     const Vec3* ref;
     const double* radius;
+    const int64_t* id;
     const int* cellStart;
     const int* cellEnd;
     double skin;
     int* count;
+    int* owned;     //!< how many of the list's first entries have a larger id
     int* out;       //!< null for the counting pass
     int maxNbr;
 
-    PD_HD void operator()(int i) const
+    //- Scan the 27 cells; pass 0: all (counting) or larger ids, pass 1: smaller ids
+    PD_HD int scan(int i, int pass, int c) const
     {
         int64_t cx, cy, cz;
         const Vec3 xi = ref[i];
         grid.cellOf(xi, cx, cy, cz);
-        int c = 0;
         for (int dz = -1; dz <= 1; ++dz)
         for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx)
@@ -340,6 +344,7 @@ struct BuildNeighbours
             for (int j = start; j < end; ++j)
             {
                 if (j == i) continue;
+                if (out && ((pass == 0) != (id[j] > id[i]))) continue;
                 int64_t jx, jy, jz;
                 grid.cellOf(ref[j], jx, jy, jz);
                 if (jx != ix || jy != iy || jz != iz) continue;
@@ -351,7 +356,20 @@ struct BuildNeighbours
                 }
             }
         }
-        count[i] = c;
+        return c;
+    }
+
+    PD_HD void operator()(int i) const
+    {
+        if (!out)
+        {
+            count[i] = scan(i, 0, 0);
+            return;
+        }
+        // The pairs this particle evaluates (partner of larger id) come first
+        const int nOwned = scan(i, 0, 0);
+        owned[i] = nOwned;
+        count[i] = scan(i, 1, nOwned);
     }
 };
 
@@ -372,6 +390,7 @@ struct TransferPairHistory
     int64_t* partner;
     Vec3* xi;
     Vec3* mr;
+    unsigned char* touching;  //!< set where a spring came over (release() must clear it)
 
     PD_HD void operator()(int i) const
     {
@@ -395,36 +414,33 @@ struct TransferPairHistory
             }
             xi[s] = x;
             mr[s] = m;
+            touching[s] = (normSqr(x) > 0 || normSqr(m) > 0) ? 1 : 0;
         }
     }
 };
 
-//- For every slot (i, k) of the full lists: the slot where the pair is
-//  evaluated, which is in the list of the particle of smaller id
-struct LinkOwnerSlots
+//- For every pair slot a particle owns (partner of larger id, first in its
+//  list): the slot in the partner's list that points back, where PairKernel
+//  leaves the partner's share of the result
+struct LinkMirrorSlots
 {
-    const int64_t* id;
+    const int* nbrOwned;
     const int* nbrCount;
     const int* nbr;
     int maxNbr;
-    int* ownerSlot;
+    int* mirror;
 
     PD_HD void operator()(int i) const
     {
-        for (int k = 0; k < nbrCount[i]; ++k)
+        for (int k = 0; k < nbrOwned[i]; ++k)
         {
             const size_t s = size_t(i) * maxNbr + k;
             const int j = nbr[s];
-            if (id[i] < id[j])
-            {
-                ownerSlot[s] = int(s);
-                continue;
-            }
-            for (int l = 0; l < nbrCount[j]; ++l)
+            for (int l = nbrOwned[j]; l < nbrCount[j]; ++l)
             {
                 if (nbr[size_t(j) * maxNbr + l] == i)
                 {
-                    ownerSlot[s] = int(size_t(j) * maxNbr + l);
+                    mirror[s] = int(size_t(j) * maxNbr + l);
                     break;
                 }
             }
@@ -492,16 +508,15 @@ struct PairKernel
 {
     ParticleView p;
     LawView law;
-    const int* nbrCount;
+    const int* nbrOwned;
     const int* nbr;
     int maxNbr;
-    const int* ownerSlot;
+    const int* mirror;
     Vec3* pairXi;
     Vec3* pairMr;
-    unsigned char* pairTouching;
-    Vec3* pairForce;
-    Vec3* pairTorqueA;
-    Vec3* pairTorqueB;
+    unsigned char* slotTouching;
+    Vec3* slotForce;
+    Vec3* slotTorque;
 
     //- Volumetric overlap of particles a and b, normal from a to b
     PD_HD OverlapResult pairOverlap(int a, int b) const
@@ -527,21 +542,40 @@ struct PairKernel
         return r;
     }
 
+    //- A contact that ended: its springs go (written only once, not every step
+    //  for every neighbour out of reach)
+    PD_HD void release(size_t s) const
+    {
+        if (slotTouching[s])
+        {
+            slotTouching[s] = 0;
+            slotTouching[mirror[s]] = 0;
+            pairXi[s] = Vec3();
+            pairMr[s] = Vec3();
+        }
+    }
+
+    //- Each side's share goes into its own slot: the partner then sums its
+    //  list front to back, with no scattered reads (and no write races: the
+    //  mirror slot is written by this pair's owner only)
     PD_HD void store(size_t s, const ContactResult& res, const Vec3& armA, const Vec3& armB) const
     {
-        pairTouching[s] = 1;
-        pairForce[s] = res.force;
-        pairTorqueA[s] = cross(armA, res.force) + res.rollingTorque;
-        pairTorqueB[s] = cross(armB, -res.force) - res.rollingTorque;
+        const size_t m = size_t(mirror[s]);
+        slotTouching[s] = 1;
+        slotTouching[m] = 1;
+        slotForce[s] = res.force;
+        slotTorque[s] = cross(armA, res.force) + res.rollingTorque;
+        slotForce[m] = -res.force;
+        slotTorque[m] = cross(armB, -res.force) - res.rollingTorque;
     }
 
     PD_HD void operator()(int i) const
     {
-        const int cnt = nbrCount[i];
+        // Only the pairs this particle owns: they are first in its list
+        const int cnt = nbrOwned[i];
         for (int k = 0; k < cnt; ++k)
         {
             const size_t s = size_t(i) * maxNbr + k;
-            if (size_t(ownerSlot[s]) != s) continue;  // evaluated by the other particle
             const int a = i;
             const int b = nbr[s];
             if (law.law.law == ContactLaw::overlapVolume)
@@ -552,10 +586,8 @@ struct PairKernel
                                        ? pairOverlap(a, b) : OverlapResult();
                 if (!ov.touching)
                 {
-                    pairXi[s] = Vec3();
-                    pairMr[s] = Vec3();
-                    pairTouching[s] = 0;
-                continue;
+                    release(s);
+                    continue;
                 }
                 
                 ContactKinematics kin;
@@ -584,9 +616,7 @@ struct PairKernel
             const double overlap = ra + rb - dist;
             if (overlap <= 0 || dist <= 0)
             {
-                pairXi[s] = Vec3();
-                pairMr[s] = Vec3();
-                pairTouching[s] = 0;
+                release(s);
                 continue;
             }
             
@@ -618,14 +648,12 @@ struct ForceKernel
     Vec3 gravity;
     double time;
 
-    // particle-particle results of PairKernel
+    // particle-particle results of PairKernel, per slot of each list
     const int* nbrCount;
     int maxNbr;
-    const int* ownerSlot;
-    const unsigned char* pairTouching;
-    const Vec3* pairForce;
-    const Vec3* pairTorqueA;
-    const Vec3* pairTorqueB;
+    const unsigned char* slotTouching;
+    const Vec3* slotForce;
+    const Vec3* slotTorque;
     int* contactCount;
 
     // planes: per particle nPlanes slots
@@ -670,6 +698,14 @@ struct ForceKernel
         T += cross(arm, res.force) + res.rollingTorque;
     }
 
+    //- Reset a wall spring, writing only when there is something to reset
+    //  (most particles are away from most walls most of the time)
+    PD_HD static void clearSpring(Vec3& xi, Vec3& mr)
+    {
+        if (xi.x != 0 || xi.y != 0 || xi.z != 0) xi = Vec3();
+        if (mr.x != 0 || mr.y != 0 || mr.z != 0) mr = Vec3();
+    }
+
     //- Volumetric contact of particle i with a wall. ov.normal points from the
     //  wall into the particle; ov.centroid is the contact point.
     PD_HD void wallContactVolumetric
@@ -706,27 +742,17 @@ struct ForceKernel
         const Vec3 xi_ = p.pos[i];
         const double ri = p.radius[i];
 
-        // Particle-particle: sum the pair results. A pair is evaluated once, in
-        // the list of its particle of smaller id (the owner); the other side
-        // reads the owner's slot and takes the opposite force.
+        // Particle-particle: sum this particle's share of every pair, in list
+        // order (deterministic whatever the thread schedule)
         int touching = 0;
         const int cnt = nbrCount[i];
         for (int k = 0; k < cnt; ++k)
         {
             const size_t s = size_t(i) * maxNbr + k;
-            const size_t o = size_t(ownerSlot[s]);
-            if (!pairTouching[o]) continue;
+            if (!slotTouching[s]) continue;
             ++touching;
-            if (o == s)
-            {
-                F += pairForce[o];
-                T += pairTorqueA[o];
-            }
-            else
-            {
-                F -= pairForce[o];
-                T += pairTorqueB[o];
-            }
+            F += slotForce[s];
+            T += slotTorque[s];
         }
         contactCount[i] = touching;
 
@@ -743,8 +769,7 @@ struct ForceKernel
             const size_t s = size_t(i) * nPlanes + w;
             if (h >= ri)
             {
-                planeXi[s] = Vec3();
-                planeMr[s] = Vec3();
+                clearSpring(planeXi[s], planeMr[s]);
                 continue;
             }
             const Vec3 foot = xi_ - h * n;
@@ -756,8 +781,7 @@ struct ForceKernel
                     : sphereHalfSpaceOverlap(xi_, ri, foot, n);
                 if (!ov.touching)
                 {
-                    planeXi[s] = Vec3();
-                    planeMr[s] = Vec3();
+                    clearSpring(planeXi[s], planeMr[s]);
                     continue;
                 }
                 ++walls;
@@ -1007,20 +1031,23 @@ public:
     void advance(int64_t nSteps) override
     {
         const double dt = config_.timeStep;
+        const auto first = thrust::counting_iterator<int>(0);
         for (int64_t k = 0; k < nSteps; ++k)
         {
             const int n = int(id_.size());
-            const auto first = thrust::counting_iterator<int>(0);
-            thrust::for_each(thrust::device, first, first + n, KickDrift{view(), dt});
-            time_ = double(step_ + 1) * dt + timeOffset();
+            const double maxSqr = n == 0 ? 0.0 : thrust::transform_reduce(
+                thrust::device, first, first + n, KickDrift{view(), ptr(typeShape_), ptr(ref_), dt},
+                0.0, thrust::maximum<double>());
             ++step_;
-            if (needsRebuild())
+            time_ = double(step_) * dt + timeOffset();
+            const double half = 0.5 * skin();
+            if (maxSqr > half * half)
             {
                 rebuild(true);
             }
             computeForces();
             const int n2 = int(id_.size());
-            thrust::for_each(thrust::device, first, first + n2, FinalKick{view(), dt});
+            thrust::for_each(thrust::device, first, first + n2, FinalKick{view(), ptr(typeShape_), dt});
         }
     }
 
@@ -1421,18 +1448,6 @@ private:
         rMax_ = std::max(rMax_, rMax);
     }
 
-    bool needsRebuild()
-    {
-        const int n = int(id_.size());
-        if (n == 0) return false;
-        const auto first = thrust::counting_iterator<int>(0);
-        const double maxSqr = thrust::transform_reduce(thrust::device, first, first + n,
-                                                       DisplacementSqr{ptr(pos_), ptr(ref_)}, 0.0,
-                                                       thrust::maximum<double>());
-        const double half = 0.5 * skin();
-        return maxSqr > half * half;
-    }
-
     double skin() const { return config_.skinFraction * 2 * rMax_; }
 
     template<class T>
@@ -1540,8 +1555,9 @@ private:
 
         // Count, size, fill
         nbrCount_.assign(n, 0);
-        BuildNeighbours build{grid, ptr(ref_), ptr(radius_), ptr(cellStart), ptr(cellEnd), skin(),
-                              ptr(nbrCount_), nullptr, 0};
+        nbrOwned_.assign(n, 0);
+        BuildNeighbours build{grid, ptr(ref_), ptr(radius_), ptr(id_), ptr(cellStart), ptr(cellEnd), skin(),
+                              ptr(nbrCount_), ptr(nbrOwned_), nullptr, 0};
         thrust::for_each(thrust::device, first, first + n, build);
         const int maxCount = n > 0 ? thrust::reduce(thrust::device, nbrCount_.begin(), nbrCount_.end(), 0,
                                                     thrust::maximum<int>()) : 0;
@@ -1552,20 +1568,21 @@ private:
         thrust::for_each(thrust::device, first, first + n, build);
 
         pairPartner_.assign(size_t(n) * maxNbr_, -1);
+        slotTouching_.assign(size_t(n) * maxNbr_, 0);
         pairXi_.assign(size_t(n) * maxNbr_, Vec3());
         pairMr_.assign(size_t(n) * maxNbr_, Vec3());
         if (oldMax > 0 && !oldCount.empty())
         {
             TransferPairHistory transfer{ptr(perm), oldListN, ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(id_),
                                          ptr(oldCount), ptr(oldPartner), ptr(oldXi), ptr(oldMr), oldMax,
-                                         ptr(pairPartner_), ptr(pairXi_), ptr(pairMr_)};
+                                         ptr(pairPartner_), ptr(pairXi_), ptr(pairMr_), ptr(slotTouching_)};
             thrust::for_each(thrust::device, first, first + n, transfer);
         }
         else
         {
             TransferPairHistory transfer{ptr(perm), 0, ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(id_),
                                          nullptr, nullptr, nullptr, nullptr, 0,
-                                         ptr(pairPartner_), ptr(pairXi_), ptr(pairMr_)};
+                                         ptr(pairPartner_), ptr(pairXi_), ptr(pairMr_), ptr(slotTouching_)};
             thrust::for_each(thrust::device, first, first + n, transfer);
         }
 
@@ -1573,13 +1590,11 @@ private:
         {
             throw Error("neighbour lists exceed 2^31 slots: too many particles or neighbours per particle");
         }
-        ownerSlot_.assign(size_t(n) * maxNbr_, 0);
+        mirrorSlot_.assign(size_t(n) * maxNbr_, 0);
         thrust::for_each(thrust::device, first, first + n,
-                         LinkOwnerSlots{ptr(id_), ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(ownerSlot_)});
-        pairTouching_.assign(size_t(n) * maxNbr_, 0);
-        pairForce_.resize(size_t(n) * maxNbr_);
-        pairTorqueA_.resize(size_t(n) * maxNbr_);
-        pairTorqueB_.resize(size_t(n) * maxNbr_);
+                         LinkMirrorSlots{ptr(nbrOwned_), ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(mirrorSlot_)});
+        slotForce_.resize(size_t(n) * maxNbr_);
+        slotTorque_.resize(size_t(n) * maxNbr_);
 
         contactCount_.assign(n, 0);
         wallContactCount_.assign(n, 0);
@@ -1606,20 +1621,23 @@ private:
             const auto nb = toHost(nbr_);
             auto xi = toHost(pairXi_);
             auto mr = toHost(pairMr_);
+            auto touching = toHost(slotTouching_);
             for (int i = 0; i < n; ++i)
                 for (int k = 0; k < cnt[i]; ++k)
                 {
                     const size_t sl = size_t(i) * maxNbr_ + k;
                     const int64_t a = std::min(ids[i], ids[nb[sl]]), b = std::max(ids[i], ids[nb[sl]]);
                     auto it = hist.find({a, b});
-                    if (it != hist.end())
+                    if (it != hist.end() && ids[i] < ids[nb[sl]])
                     {
                         xi[sl] = it->second->tangential;
                         mr[sl] = it->second->rolling;
+                        touching[sl] = 1;
                     }
                 }
             toDevice(pairXi_, xi);
             toDevice(pairMr_, mr);
+            toDevice(slotTouching_, touching);
         }
 
         const int nPl = int(config_.planes.size());
@@ -1666,16 +1684,14 @@ private:
         k.gravity = config_.gravity;
         k.time = time_;
         const auto first = thrust::counting_iterator<int>(0);
-        PairKernel pk{k.p, k.law, ptr(nbrCount_), ptr(nbr_), maxNbr_, ptr(ownerSlot_), ptr(pairXi_), ptr(pairMr_),
-                      ptr(pairTouching_), ptr(pairForce_), ptr(pairTorqueA_), ptr(pairTorqueB_)};
+        PairKernel pk{k.p, k.law, ptr(nbrOwned_), ptr(nbr_), maxNbr_, ptr(mirrorSlot_), ptr(pairXi_), ptr(pairMr_),
+                      ptr(slotTouching_), ptr(slotForce_), ptr(slotTorque_)};
         thrust::for_each(thrust::device, first, first + n, pk);
         k.nbrCount = ptr(nbrCount_);
         k.maxNbr = maxNbr_;
-        k.ownerSlot = ptr(ownerSlot_);
-        k.pairTouching = ptr(pairTouching_);
-        k.pairForce = ptr(pairForce_);
-        k.pairTorqueA = ptr(pairTorqueA_);
-        k.pairTorqueB = ptr(pairTorqueB_);
+        k.slotTouching = ptr(slotTouching_);
+        k.slotForce = ptr(slotForce_);
+        k.slotTorque = ptr(slotTorque_);
         k.contactCount = ptr(contactCount_);
         k.planes = nPl ? ptr(planes_) : nullptr;
         k.nPlanes = nPl;
@@ -1796,12 +1812,12 @@ private:
     PolyhedronTable shapeTable_;
 
     int maxNbr_ = 0;
-    dvec<int> nbrCount_, nbr_, contactCount_, wallContactCount_;
+    dvec<int> nbrCount_, nbrOwned_, nbr_, contactCount_, wallContactCount_;
     dvec<int64_t> pairPartner_;
     dvec<Vec3> pairXi_, pairMr_;
-    dvec<int> ownerSlot_;
-    dvec<unsigned char> pairTouching_;
-    dvec<Vec3> pairForce_, pairTorqueA_, pairTorqueB_;
+    dvec<int> mirrorSlot_;
+    dvec<unsigned char> slotTouching_;
+    dvec<Vec3> slotForce_, slotTorque_;
 
     dvec<PlaneDevice> planes_;
     dvec<Vec3> planeXi_, planeMr_;

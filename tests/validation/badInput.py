@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Bad input in couplingProperties / time steps is refused with a message
+that names what is wrong.
+
+  1. unknown force model        -> lists the valid force models
+  2. unknown void-fraction model -> lists the valid ones
+  3. missing coefficient         -> names the dictionary and the key
+  4. DEM step not dividing the fluid step -> refused (FatalIOError)
+  5. demStepsPerFluidStep not matching deltaT/timeStep -> refused
+Each run must fail (non-zero exit) and its log contain the strings listed.
+"""
+import os
+import sys
+import hedracase as hc
+
+BASE = """formulation setI;
+voidFractionModel centre;
+forceModels (SchillerNaumann pressureGradient);
+"""
+
+tests = [
+    ("unknownForce", BASE.replace("SchillerNaumann", "Stokesian"), 1e-5,
+     ["Unknown forceModel type Stokesian", "Valid forceModel types",
+      "SchillerNaumann", "DiFelice", "Gidaspow", "HaiderLevenspiel", "couplingProperties"]),
+    ("unknownVoidFraction", BASE.replace("centre", "nearest"), 1e-5,
+     ["Unknown voidFractionModel type nearest", "centre", "divided"]),
+    ("missingCoefficient",
+     BASE + "smoothingModel implicitDiffusion;\nimplicitDiffusionCoeffs { }\n", 1e-5,
+     ["lengthScale", "implicitDiffusionCoeffs", "couplingProperties"]),
+    ("demStepNotDividing", BASE, 3e-5,
+     ["does not divide", "timeStep", "demProperties"]),
+    ("subStepsMismatch", BASE + "demStepsPerFluidStep 7;\n", 1e-5,
+     ["demStepsPerFluidStep 7", "does not match", "couplingProperties"]),
+]
+
+results = []
+for name, coupling, demDt, expect in tests:
+    case = hc.workdir(f"bad-{name}")
+    hc.block_mesh(case, (0, 0, 0), (0.02, 0.02, 0.02), (2, 2, 2),
+                  {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
+    hc.control_dict(case, 0.002, 1e-3, 1)
+    hc.schemes_solution(case)
+    hc.transport(case, 1e-6, 1000)
+    hc.fields(case, {"walls": "type noSlip;"}, {"walls": "type fixedFluxPressure;"})
+    hc.dem_properties(case, demDt, 2500, 2e-3, {"floor": ((0, 0, 0), (0, 0, 1))},
+                      hc.random_fill("one", 1, (0.005, 0.005, 0.005), (0.015, 0.015, 0.015)))
+    hc.coupling(case, coupling)
+    hc.run("blockMesh", case, "log.blockMesh")
+    rc = hc.run("demPimpleFoam", case, "log.demPimpleFoam", check=False)
+    log = open(os.path.join(case, "log.demPimpleFoam")).read()
+    missing = [s for s in expect if s not in log]
+    ok = rc != 0 and not missing
+    results.append(ok)
+    print(f"{'PASS' if ok else 'FAIL'}: {name}: exit {rc}"
+          + (f", missing in the message: {missing}" if missing else ""))
+    if not ok:
+        i = log.find("FOAM FATAL")
+        print(log[i:i + 1500] if i >= 0 else log[-1500:])
+hc.finish(results)
