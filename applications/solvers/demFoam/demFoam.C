@@ -16,8 +16,9 @@ Description
     Write times get <time>/polyDEM/state (restart: a run starting from a time
     with a state continues it bit for bit), particles.vtp and walls.vtp;
     particles.pvd and walls.pvd in the case folder open the whole run in
-    ParaView. postProcessing/demFoam/<startTime>/summary.dat has a line per
-    deltaT; monitors (planeFlux, reposeAngle, boundingBox) write to
+    ParaView; with polyhedral particle types also polyhedra.vtp (the true
+    shapes) and polyhedra.pvd. postProcessing/demFoam/<startTime>/summary.dat
+    has a line per deltaT; monitors (planeFlux, reposeAngle, boundingBox) write to
     postProcessing/<name>/<startTime>/<name>.dat.
 
     Input syntax: docs/demProperties.md.

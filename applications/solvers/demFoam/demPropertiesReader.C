@@ -15,6 +15,10 @@ Description
 #include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/StlReader.hpp"
 
+#include "ConvexShapeBuilder.hpp"
+#include "ShapeFiles.hpp"
+#include "ShapeGenerators.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -229,17 +233,17 @@ int Foam::demPropertiesReader::typeIndex
 ) const
 {
     const word name(d.get<word>(key));
-    for (size_t i = 0; i < config_.types.size(); ++i)
+    for (size_t i = 0; i < userTypes_.size(); ++i)
     {
-        if (config_.types[i].name == name)
+        if (userTypes_[i].name == name)
         {
             return int(i);
         }
     }
     wordList valid;
-    for (const auto& t : config_.types)
+    for (const auto& t : userTypes_)
     {
-        valid.append(word(t.name));
+        valid.append(t.name);
     }
     FatalIOErrorInFunction(d)
         << "Unknown particle type '" << name << "' in entry '" << key
@@ -286,7 +290,10 @@ void Foam::demPropertiesReader::readContactModel()
 {
     const dictionary& d = requiredDict(dict_, "contactModel");
 
-    static const wordList laws({"hertzMindlin", "linearSpringDashpot"});
+    static const wordList laws
+    ({
+        "hertzMindlin", "linearSpringDashpot", "overlapVolume"
+    });
     static const wordList rollings({"none", "constantTorque", "elasticPlastic"});
 
     config_.contact.law = polydem::ContactLaw(selectName(d, "law", laws, "contact law"));
@@ -298,6 +305,26 @@ void Foam::demPropertiesReader::readContactModel()
         config_.contact.normalStiffness = d.get<scalar>("normalStiffness");
         config_.contact.tangentialStiffnessRatio =
             d.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0);
+    }
+    else if (config_.contact.law == polydem::ContactLaw::overlapVolume)
+    {
+        // Fn = volumetricStiffness * overlap volume [N/m3]
+        config_.contact.volumetricStiffness = d.get<scalar>("volumetricStiffness");
+        config_.contact.tangentialStiffnessRatio =
+            d.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0);
+        if (!(config_.contact.volumetricStiffness > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'contactModel/volumetricStiffness' must be positive"
+                << " [N/m3], got " << config_.contact.volumetricStiffness
+                << " in " << dict_.name() << nl << exit(FatalIOError);
+        }
+    }
+    if (!(config_.contact.tangentialStiffnessRatio > 0))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'contactModel/tangentialStiffnessRatio' must be positive"
+            << " in " << dict_.name() << nl << exit(FatalIOError);
     }
 }
 
@@ -423,10 +450,217 @@ void Foam::demPropertiesReader::readInteractions()
 }
 
 
+std::vector<polydem::ConvexShape> Foam::demPropertiesReader::readGeometry
+(
+    const dictionary& td,
+    const word& typeName
+) const
+{
+    const dictionary& gd = td.subDict("geometry");
+    const std::string where = "particleTypes/" + typeName + "/geometry";
+    static const wordList kinds
+    ({
+        "stl", "rock", "box", "cube", "tetrahedron", "octahedron",
+        "dodecahedron", "icosahedron", "settling"
+    });
+    const label kind = selectName(gd, "type", kinds, "polyhedron geometry type");
+
+    // Number of shapes: several only for random rocks (one per seed)
+    const label nShapes = gd.getOrDefault<label>("shapes", 1);
+    if (nShapes < 1 || (nShapes > 1 && kind != 1))
+    {
+        FatalIOErrorInFunction(gd)
+            << "Entry '" << where.c_str() << "/shapes' must be >= 1, and more"
+            << " than one only for 'type rock' (one random rock per seed), in "
+            << dict_.name() << nl << exit(FatalIOError);
+    }
+
+    // Report a polydem::Error (degenerate hull, caps) naming the entry
+    auto fail = [&](const polydem::Error& err, const word& key, const std::string& file)
+    {
+        const entry* e = gd.findEntry(key, keyType::LITERAL);
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            dict_.name(), e ? e->startLineNumber() : -1
+        )
+            << "Cannot make the polyhedron of entry '" << (where + "/" + key).c_str()
+            << "' of " << dict_.name() << nl;
+        if (!file.empty())
+        {
+            FatalIOError<< "    file " << file.c_str() << nl;
+        }
+        FatalIOError
+            << "    " << err.message().c_str() << nl
+            << "    (at most " << polydem::kMaxPolyhedronVertices << " vertices and "
+            << polydem::kMaxPolyhedronFaces << " faces per shape)" << nl
+            << exit(FatalIOError);
+    };
+
+    auto positive = [&](const word& key) -> scalar
+    {
+        const scalar v = gd.get<scalar>(key);
+        if (!(v > 0))
+        {
+            FatalIOErrorInFunction(gd)
+                << "Entry '" << (where + "/" + key).c_str() << "' must be positive,"
+                << " got " << v << " in " << dict_.name() << nl
+                << exit(FatalIOError);
+        }
+        return v;
+    };
+
+    std::vector<polydem::ConvexShape> result;
+    if (kind == 0)
+    {
+        // STL (or OBJ) point set: its convex hull. A surface that is not
+        // convex (hull volume above the enclosed volume) is refused unless
+        // 'convexHull true;' asks for its hull.
+        const fileName file(resolveSurface(dict_, gd.get<fileName>("file")));
+        const scalar scale = gd.getOrDefault<scalar>("scale", 1.0);
+        const bool takeHull = gd.getOrDefault<bool>("convexHull", false);
+        try
+        {
+            std::vector<polydem::Vec3> points;
+            double enclosed = -1;
+            if (file.hasExt("obj") || file.hasExt("OBJ"))
+            {
+                points = polydem::readPointSet(file);
+                for (auto& x : points)
+                {
+                    x = scale*x;
+                }
+            }
+            else
+            {
+                const polydem::TriangleMesh mesh = polydem::readStl(file, scale);
+                points = mesh.points;
+                // Enclosed volume (divergence theorem; orientation-free)
+                double v6 = 0;
+                for (const auto& t : mesh.triangles)
+                {
+                    v6 += dot(mesh.points[t[0]], cross(mesh.points[t[1]], mesh.points[t[2]]));
+                }
+                enclosed = std::abs(v6)/6.0;
+            }
+            polydem::ConvexShape s = polydem::buildConvexShape(points, typeName);
+            if (enclosed >= 0 && !takeHull && s.volume > (1 + 1e-3)*enclosed)
+            {
+                const entry* e = gd.findEntry("file", keyType::LITERAL);
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__,
+                    dict_.name(), e ? e->startLineNumber() : -1
+                )
+                    << "The surface " << file << " of entry '"
+                    << (where + "/file").c_str() << "' of " << dict_.name()
+                    << " is not convex (or not closed):" << nl
+                    << "    its convex hull has volume " << s.volume
+                    << " m3, the surface encloses " << enclosed << " m3" << nl
+                    << "    polyhedral particles are convex: give a convex"
+                    << " surface, or set 'convexHull true;' to use its hull"
+                    << nl << exit(FatalIOError);
+            }
+            s.check();
+            result.push_back(std::move(s));
+        }
+        catch (const polydem::Error& err)
+        {
+            fail(err, "file", file);
+        }
+    }
+    else
+    {
+        try
+        {
+            switch (kind)
+            {
+                case 1:
+                {
+                    const scalar d = positive("equivalentDiameter");
+                    const scalar el = gd.getOrDefault<scalar>("elongation", 1.0);
+                    const scalar fl = gd.getOrDefault<scalar>("flatness", 1.0);
+                    const label np = gd.getOrDefault<label>("points", 20);
+                    const label seed = gd.getOrDefault<label>("seed", 1);
+                    if (!(el > 0 && el <= 1) || !(fl > 0 && fl <= 1) || np < 4)
+                    {
+                        FatalIOErrorInFunction(gd)
+                            << "Entry '" << where.c_str() << "': elongation and"
+                            << " flatness must be in (0, 1], points >= 4, in "
+                            << dict_.name() << nl << exit(FatalIOError);
+                    }
+                    for (label k = 0; k < nShapes; ++k)
+                    {
+                        result.push_back
+                        (
+                            polydem::makeRock(d, el, fl, int(np), uint64_t(seed + k))
+                        );
+                    }
+                    break;
+                }
+                case 2:
+                {
+                    const vector a(gd.get<vector>("size"));
+                    if (!(a.x() > 0 && a.y() > 0 && a.z() > 0))
+                    {
+                        FatalIOErrorInFunction(gd)
+                            << "Entry '" << where.c_str() << "/size' must be"
+                            << " positive edges (a b c) in " << dict_.name()
+                            << nl << exit(FatalIOError);
+                    }
+                    result.push_back(polydem::makeBox(a.x(), a.y(), a.z()));
+                    break;
+                }
+                case 3:
+                    result.push_back(polydem::makeCube(positive("edge")));
+                    break;
+                case 4:
+                    result.push_back(polydem::makeTetrahedron(positive("equivalentDiameter")));
+                    break;
+                case 5:
+                    result.push_back(polydem::makeOctahedron(positive("equivalentDiameter")));
+                    break;
+                case 6:
+                    result.push_back(polydem::makeDodecahedron(positive("equivalentDiameter")));
+                    break;
+                case 7:
+                    result.push_back(polydem::makeIcosahedron(positive("equivalentDiameter")));
+                    break;
+                default:
+                    result.push_back
+                    (
+                        polydem::makeSettlingParticle
+                        (
+                            positive("equivalentDiameter"),
+                            positive("aspectRatio"),
+                            int(gd.get<label>("facets"))
+                        )
+                    );
+                    break;
+            }
+            for (auto& s : result)
+            {
+                s.check();
+            }
+        }
+        catch (const polydem::Error& err)
+        {
+            // Blame the entry that sets the size of the hull
+            fail(err, kind == 1 ? "points" : (kind == 8 ? "facets" : "type"), "");
+        }
+    }
+    for (size_t k = 0; k < result.size(); ++k)
+    {
+        result[k].name = typeName + (result.size() > 1 ? "_" + std::to_string(k) : "");
+    }
+    return result;
+}
+
+
 void Foam::demPropertiesReader::readParticleTypes()
 {
     const dictionary& d = requiredDict(dict_, "particleTypes");
-    static const wordList shapes({"sphere"});
+    static const wordList shapes({"sphere", "polyhedron"});
     for (const entry& e : d)
     {
         if (!e.isDict())
@@ -437,13 +671,53 @@ void Foam::demPropertiesReader::readParticleTypes()
                 << exit(FatalIOError);
         }
         const dictionary& td = e.dict();
+        userType u;
+        u.name = e.keyword();
+        u.firstType = int(config_.types.size());
         polydem::ParticleType t;
         t.name = e.keyword();
-        selectNameOrDefault(td, "shape", shapes, "particle shape", 0);
-        t.shape = polydem::ShapeKind::sphere;
         t.material = materialIndex(td, "material");
-        t.radius = 0.5*td.get<scalar>("diameter");
-        config_.types.push_back(t);
+        const label shape = selectNameOrDefault(td, "shape", shapes, "particle shape", 0);
+        if (shape == 0)
+        {
+            t.shape = polydem::ShapeKind::sphere;
+            t.radius = 0.5*td.get<scalar>("diameter");
+            config_.types.push_back(t);
+        }
+        else
+        {
+            if (config_.contact.law != polydem::ContactLaw::overlapVolume)
+            {
+                const entry* le = dict_.subDict("contactModel").findEntry("law", keyType::LITERAL);
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__,
+                    dict_.name(), le ? le->startLineNumber() : -1
+                )
+                    << "Particle type '" << e.keyword() << "' is a polyhedron:"
+                    << " polyhedral particles need 'law overlapVolume;' in"
+                    << " entry 'contactModel/law' of " << dict_.name()
+                    << " (with volumetricStiffness [N/m3])" << nl
+                    << exit(FatalIOError);
+            }
+            u.polyhedron = true;
+            t.shape = polydem::ShapeKind::polyhedron;
+            std::vector<polydem::ConvexShape> ss = readGeometry(td, e.keyword());
+            u.nTypes = int(ss.size());
+            for (auto& s : ss)
+            {
+                t.shapeIndex = int(config_.shapes.size());
+                t.radius = s.boundingRadius;
+                Info<< "    particle type " << e.keyword() << ": shape "
+                    << s.name.c_str() << ", " << s.nVertices() << " vertices, "
+                    << s.nFaces() << " faces, d_eq " << s.equivalentDiameter
+                    << " m, bounding diameter " << 2*s.boundingRadius
+                    << " m, sphericity " << s.sphericity << endl;
+                config_.shapes.push_back(std::move(s));
+                config_.types.push_back(t);
+            }
+        }
+        userTypes_.push_back(u);
     }
     if (config_.types.empty())
     {
@@ -695,7 +969,32 @@ void Foam::demPropertiesReader::readInsertions()
                 << "/number' must not be negative in " << dict_.name() << nl
                 << exit(FatalIOError);
         }
-        ins.sizes = readDistribution(id, config_.types[ins.type]);
+        const userType& ut = userTypes_[ins.type];
+        if (ut.polyhedron)
+        {
+            // Placed by bounding sphere: one diameter per shape, equally likely
+            if (id.found("diameterDistribution", keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry 'insertion/" << e.keyword() << "/diameterDistribution'"
+                    << ": particle type '" << ut.name << "' is a polyhedron, whose"
+                    << " size is set by its geometry; remove the entry from "
+                    << dict_.name() << nl << exit(FatalIOError);
+            }
+            std::vector<std::pair<double, double>> fr;
+            for (int k = 0; k < ut.nTypes; ++k)
+            {
+                fr.emplace_back(2*config_.types[ut.firstType + k].radius, 1.0);
+            }
+            ins.sizes = ut.nTypes == 1
+                ? polydem::SizeDistribution::fixedDiameter(fr[0].first)
+                : polydem::SizeDistribution::discrete(fr);
+            ins.sizes.source = dict_.name();
+        }
+        else
+        {
+            ins.sizes = readDistribution(id, config_.types[ut.firstType]);
+        }
         ins.region = readRegion(id);
         insertions_.push_back(std::move(ins));
     }

@@ -18,6 +18,7 @@ Description
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <limits>
 #include <unordered_map>
 
@@ -192,23 +193,85 @@ polydem::ParticleState Foam::demSimulation::insert
         );
     }
 
+    const auto& ut = input_.userTypes()[ins.type];
+    const auto& config = input_.config();
     std::vector<polydem::Vec3> positions(seeds.size());
     std::vector<double> radii(seeds.size());
-    double volume = 0;
+    std::vector<int> types(seeds.size(), ut.firstType);
     for (size_t i = 0; i < seeds.size(); ++i)
     {
         positions[i] = seeds[i].position;
         radii[i] = seeds[i].radius;
-        volume += 4.0/3.0*constant::mathematical::pi*std::pow(radii[i], 3);
     }
+
+    // Polyhedra: the shape whose bounding sphere the seed is (a random one
+    // among shapes of equal bounding radius) and a uniformly random
+    // orientation (Shoemake 1992), from the insertion's seed
+    std::vector<polydem::Quaternion> q(seeds.size());
+    if (ut.polyhedron)
+    {
+        std::mt19937_64 rng(uint64_t(ins.seed)*0x9E3779B97F4A7C15ULL + 12345u);
+        auto uniform = [&rng]() { return double(rng() >> 11)*0x1.0p-53; };
+        for (size_t i = 0; i < seeds.size(); ++i)
+        {
+            double best = GREAT;
+            std::vector<int> ties;
+            for (int k = 0; k < ut.nTypes; ++k)
+            {
+                const double dr =
+                    std::abs(config.types[ut.firstType + k].radius - radii[i]);
+                if (dr < best - 1e-12*radii[i])
+                {
+                    best = dr;
+                    ties.assign(1, ut.firstType + k);
+                }
+                else if (dr <= best + 1e-12*radii[i])
+                {
+                    ties.push_back(ut.firstType + k);
+                }
+            }
+            types[i] = ties[std::min(ties.size() - 1, size_t(uniform()*ties.size()))];
+
+            const double u1 = uniform(), u2 = uniform(), u3 = uniform();
+            const double twoPi = constant::mathematical::twoPi;
+            const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
+            q[i] = polydem::normalised
+            (
+                polydem::Quaternion
+                {
+                    b*std::cos(twoPi*u3), a*std::sin(twoPi*u2),
+                    a*std::cos(twoPi*u2), b*std::sin(twoPi*u3)
+                }
+            );
+        }
+    }
+
     polydem::ParticleState p =
-        system_->makeSpheres(ins.type, positions, radii, firstId);
+        system_->makeSpheres(ut.firstType, positions, radii, firstId);
+    double volume = 0;
     for (size_t i = 0; i < p.size(); ++i)
     {
         p.velocity[i] = ins.velocity;
+        if (ut.polyhedron)
+        {
+            const auto& type = config.types[types[i]];
+            const auto& shape = config.shapes[type.shapeIndex];
+            const double rho = config.materials[type.material].density;
+            p.type[i] = types[i];
+            p.orientation[i] = q[i];
+            p.mass[i] = rho*shape.volume;
+            p.inertia[i] = rho*shape.inertiaPerDensity;
+            p.radius[i] = shape.boundingRadius;
+            volume += shape.volume;
+        }
+        else
+        {
+            volume += 4.0/3.0*constant::mathematical::pi*std::pow(radii[i], 3);
+        }
     }
     Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
-        << " spheres, solid fraction of the region "
+        << (ut.polyhedron ? " polyhedra" : " spheres")
+        << ", solid fraction of the region "
         << volume/std::max(ins.region.volume(), VSMALL) << endl;
     return p;
 }
@@ -331,6 +394,44 @@ polydem::TriangleMesh Foam::demSimulation::wallSurface
 }
 
 
+void Foam::demSimulation::writePolyhedra
+(
+    const fileName& path,
+    const polydem::ParticleState& p
+) const
+{
+    const auto& config = input_.config();
+    std::vector<polydem::Vec3> points;
+    std::vector<std::vector<int>> polygons;
+    std::vector<int> ids;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const auto& type = config.types[p.type[i]];
+        if (type.shape != polydem::ShapeKind::polyhedron)
+        {
+            continue;
+        }
+        const polydem::ConvexShape& s = config.shapes[type.shapeIndex];
+        const int base = int(points.size());
+        for (const auto& v : s.vertices)
+        {
+            points.push_back(p.position[i] + polydem::rotate(p.orientation[i], v));
+        }
+        for (int f = 0; f < s.nFaces(); ++f)
+        {
+            std::vector<int> poly;
+            for (int k = s.faceStart[f]; k < s.faceStart[f + 1]; ++k)
+            {
+                poly.push_back(base + s.faceVertex[k]);
+            }
+            polygons.push_back(std::move(poly));
+            ids.push_back(int(p.id[i]));
+        }
+    }
+    polydem::writeSurfaceVtp(path, points, polygons, ids, "particleId");
+}
+
+
 void Foam::demSimulation::writeState()
 {
     const fileName dir(runTime_.timePath()/"polyDEM");
@@ -346,6 +447,13 @@ void Foam::demSimulation::writeState()
         polydem::writeParticlesVtp(dir/"particles.vtp", state.particles);
         particlesPvd_.add(t, rel/"particles.vtp");
         particlesPvd_.write(runTime_.path()/"particles.pvd");
+
+        if (input_.hasPolyhedra())
+        {
+            writePolyhedra(dir/"polyhedra.vtp", state.particles);
+            polyhedraPvd_.add(t, rel/"polyhedra.vtp");
+            polyhedraPvd_.write(runTime_.path()/"polyhedra.pvd");
+        }
 
         std::vector<int> ids;
         const polydem::TriangleMesh walls = wallSurface(state.time, ids);
@@ -428,6 +536,7 @@ Foam::demSimulation::demSimulation
 
         particlesPvd_.read(runTime_.path()/"particles.pvd", runTime_.value());
         wallsPvd_.read(runTime_.path()/"walls.pvd", runTime_.value());
+        polyhedraPvd_.read(runTime_.path()/"polyhedra.pvd", runTime_.value());
         const fileName rel(runTime_.timeName()/"polyDEM");
         if (isFile(runTime_.timePath()/"polyDEM"/"particles.vtp"))
         {
@@ -436,6 +545,10 @@ Foam::demSimulation::demSimulation
         if (isFile(runTime_.timePath()/"polyDEM"/"walls.vtp"))
         {
             wallsPvd_.add(runTime_.value(), rel/"walls.vtp");
+        }
+        if (isFile(runTime_.timePath()/"polyDEM"/"polyhedra.vtp"))
+        {
+            polyhedraPvd_.add(runTime_.value(), rel/"polyhedra.vtp");
         }
     }
     else

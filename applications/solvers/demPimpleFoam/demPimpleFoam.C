@@ -62,7 +62,7 @@ int main(int argc, char *argv[])
         laminarTransport.correct();
 
         // DEM sub-steps, particles, void fraction, forces, exchange fields
-        particleCloud.evolve(laminarTransport.nu(), turbulence->nuEff());
+        particleCloud.evolve(laminarTransport.nu(), turbulence->nuEff(), alphaPhi);
 
         voidfractionf = fvc::interpolate(voidfraction);
         alphaPhi = voidfractionf*phi;

@@ -2,6 +2,7 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
+#include <fstream>
 
 namespace Foam
 {
@@ -769,5 +770,73 @@ void Foam::demCloud::write()
     if (Pstream::master())
     {
         backend_->write();
+        if (mesh_.time().writeTime())
+        {
+            // The forces the back end holds for its next advance: read back
+            // on restart so that a restarted run continues as if unbroken
+            const fileName dir(mesh_.time().timePath()/"polyDEM");
+            mkDir(dir);
+            OFstream os(dir/"fluidForces");
+            os.precision(17);
+            os  << "// demCloud: fluid force [N] per particle id, for restart"
+                << nl << force_.size() << nl;
+            forAll(force_, i)
+            {
+                os  << particles_.id[i] << ' ' << force_[i].x() << ' '
+                    << force_[i].y() << ' ' << force_[i].z() << nl;
+            }
+        }
     }
+}
+
+
+bool Foam::demCloud::restartFilesPresent() const
+{
+    bool found =
+        Pstream::master()
+     && isFile(mesh_.time().timePath()/"polyDEM"/"fluidForces");
+    reduce(found, orOp<bool>());
+    return found;
+}
+
+
+bool Foam::demCloud::readRestartForces()
+{
+    bool found = false;
+    if (Pstream::master())
+    {
+        const fileName f(mesh_.time().timePath()/"polyDEM"/"fluidForces");
+        if (isFile(f))
+        {
+            std::ifstream is(f);
+            std::string comment;
+            std::getline(is, comment);
+            long n = 0;
+            is >> n;
+            Map<vector> byId;
+            for (long k = 0; k < n; ++k)
+            {
+                long id;
+                double x, y, z;
+                is >> id >> x >> y >> z;
+                byId.set(label(id), vector(x, y, z));
+            }
+            if (!is)
+            {
+                FatalErrorInFunction
+                    << "Cannot read " << f << exit(FatalError);
+            }
+            forAll(force_, i)
+            {
+                force_[i] = byId.lookup(particles_.id[i], force_[i]);
+            }
+            backend_->setForces(force_);
+            Info<< "demCloud: fluid forces of the restart read from " << f
+                << endl;
+            found = true;
+        }
+    }
+    broadcast(force_);
+    reduce(found, orOp<bool>());
+    return found;
 }

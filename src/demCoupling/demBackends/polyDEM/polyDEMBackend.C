@@ -93,8 +93,12 @@ void Foam::polyDEMBackend::typeShape
     {
         const auto& shape = cfg.shapes[t.shapeIndex];
         sphericity = shape.sphericity;
-        const polydem::Vec3& c = shape.crosswiseSphericity;
-        crosswiseSphericity = (c.x + c.y + c.z)/3;
+        // Orientation average: the mean projected area of a convex body is
+        // A/4 (Cauchy), so the mean crosswise sphericity (pi d^2/4)/(A/4)
+        // equals the sphericity pi d^2/A. The particles' orientations are
+        // not followed (ConvexShape::crosswiseSphericity has the values
+        // along the principal axes).
+        crosswiseSphericity = shape.sphericity;
     }
 }
 

@@ -22,7 +22,7 @@ Foam::HoelzerSommerfeldDrag::HoelzerSommerfeldDrag
 Foam::scalar Foam::HoelzerSommerfeldDrag::beta(const particleSample& s) const
 {
     const scalar phi = min(s.sphericity, 1.0);
-    const scalar phiPerp = min(s.crosswiseSphericity, 1.0);
+    const scalar phiPerp = s.crosswiseSphericity;  // may exceed 1 (face-on)
     const scalar Re = max(this->Re(s), SMALL);
     const scalar Cd =
         8/(Re*sqrt(phiPerp)) + 16/(Re*sqrt(phi)) + 3/(sqrt(Re)*pow(phi, 0.75))
