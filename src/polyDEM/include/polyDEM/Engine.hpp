@@ -30,7 +30,7 @@ struct Statistics
     std::size_t wallContacts = 0;
     std::size_t particlesInContact = 0;
     std::size_t neighbourListBuilds = 0;
-    double maxOverlapRatio = 0;          //!< largest overlap / radius
+    double maxOverlapRatio = 0;          //!< largest overlap / smaller radius (0 under overlapVolume)
 };
 
 class Engine

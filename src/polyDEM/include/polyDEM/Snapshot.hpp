@@ -40,6 +40,10 @@ struct Snapshot
     //  engine), so a restart must not evaluate the contacts again: that would
     //  advance the springs a second time.
     bool forcesValid = false;
+    //- External (fluid) force and torque per particle, part of force/torque
+    //  above: kept so that a restarted run replaces them exactly. Empty: none.
+    std::vector<Vec3> externalForce;
+    std::vector<Vec3> externalTorque;
 };
 
 } // namespace polydem

@@ -981,6 +981,47 @@ struct KineticEnergy
     }
 };
 
+//- Largest overlap of a particle's contacts relative to the smaller radius
+//  (Hertz and linear laws): how hard the contacts are pressed, a check on the
+//  stiffness chosen. Not defined for the volumetric law (its overlap is a volume).
+struct MaxOverlapRatio
+{
+    ParticleView p;
+    const int* nbrOwned;
+    const int* nbr;
+    int maxNbr;
+    const unsigned char* slotTouching;
+
+    PD_HD double operator()(int i) const
+    {
+        double worst = 0;
+        for (int k = 0; k < nbrOwned[i]; ++k)
+        {
+            const size_t s = size_t(i) * maxNbr + k;
+            if (!slotTouching[s]) continue;
+            const int j = nbr[s];
+            const double rMin = p.radius[i] < p.radius[j] ? p.radius[i] : p.radius[j];
+            const double ratio = (p.radius[i] + p.radius[j] - norm(p.pos[j] - p.pos[i])) / rMin;
+            worst = ratio > worst ? ratio : worst;
+        }
+        return worst;
+    }
+};
+
+//- total += new - old, for the external part of a stored force or torque
+struct ReplaceExternal
+{
+    Vec3* total;
+    const Vec3* oldPart;   //!< null: none
+    const Vec3* newPart;   //!< null: none
+
+    PD_HD void operator()(int i) const
+    {
+        if (oldPart) total[i] -= oldPart[i];
+        if (newPart) total[i] += newPart[i];
+    }
+};
+
 struct AddEnergies
 {
     PD_HD Energies operator()(const Energies& a, const Energies& b) const
@@ -1020,6 +1061,9 @@ public:
             ref_ = pos_;
         }
         setupMeshes();
+        const size_t np = s.particles.size();
+        toDevice(extForce_, s.externalForce.size() == np ? s.externalForce : std::vector<Vec3>());
+        toDevice(extTorque_, s.externalTorque.size() == np ? s.externalTorque : std::vector<Vec3>());
         rebuild(false);
         restoreHistory(s);
         if (!s.forcesValid)
@@ -1059,6 +1103,8 @@ public:
         s.particles = particles();
         s.referencePosition = toHost(ref_);
         s.forcesValid = true;
+        s.externalForce = toHost(extForce_);
+        s.externalTorque = toHost(extTorque_);
 
         const int n = int(id_.size());
         const auto cnt = toHost(nbrCount_);
@@ -1163,8 +1209,21 @@ public:
             throw Error("external forces given for " + std::to_string(force.size())
                         + " particles, the engine holds " + std::to_string(n));
         }
-        toDevice(extForce_, force);
-        toDevice(extTorque_, torque);
+        // The stored force and torque feed the next half kick: swap the old
+        // external part for the new one there too, so that a force set between
+        // steps acts from the very next step (not half a step late)
+        dvec<Vec3> newForce, newTorque;
+        toDevice(newForce, force);
+        toDevice(newTorque, torque);
+        const auto first = thrust::counting_iterator<int>(0);
+        thrust::for_each(thrust::device, first, first + int(n),
+                         ReplaceExternal{ptr(force_), extForce_.empty() ? nullptr : ptr(extForce_),
+                                         newForce.empty() ? nullptr : ptr(newForce)});
+        thrust::for_each(thrust::device, first, first + int(n),
+                         ReplaceExternal{ptr(torque_), extTorque_.empty() ? nullptr : ptr(extTorque_),
+                                         newTorque.empty() ? nullptr : ptr(newTorque)});
+        extForce_.swap(newForce);
+        extTorque_.swap(newTorque);
     }
 
     Energies energies() const override
@@ -1192,6 +1251,16 @@ public:
             if (cc[i] + wc[i] > 0) ++inContact;
         }
         s.contacts = sum / 2;
+        const int n = int(id_.size());
+        if (n > 0 && law_.law != ContactLaw::overlapVolume)
+        {
+            ThrustEngine& self = const_cast<ThrustEngine&>(*this);
+            const auto first = thrust::counting_iterator<int>(0);
+            s.maxOverlapRatio = thrust::transform_reduce(
+                thrust::device, first, first + n,
+                MaxOverlapRatio{self.view(), ptr(nbrOwned_), ptr(nbr_), maxNbr_, ptr(slotTouching_)},
+                0.0, thrust::maximum<double>());
+        }
         s.wallContacts = walls;
         s.particlesInContact = inContact;
         s.neighbourListBuilds = builds_;

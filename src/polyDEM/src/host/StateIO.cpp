@@ -128,7 +128,9 @@ void writeSnapshot(const std::string& path, const Snapshot& s, StateFormat forma
     std::snprintf(buf, sizeof buf, "%.17g", s.time);
     os << "time " << buf << "\nstep " << s.step << "\nforcesValid " << int(s.forcesValid)
        << "\nparticles " << s.particles.size() << "\npairs " << s.pairs.size()
-       << "\nwalls " << s.walls.size() << "\ndata\n";
+       << "\nwalls " << s.walls.size()
+       << "\nexternal " << (s.externalForce.empty() ? 0 : 1) << ' ' << (s.externalTorque.empty() ? 0 : 1)
+       << "\ndata\n";
 
     ParticleState& p = const_cast<ParticleState&>(s.particles);
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -155,6 +157,16 @@ void writeSnapshot(const std::string& path, const Snapshot& s, StateFormat forma
         writeVec(os, h.normal, binary);
         writeVec(os, h.tangential, binary);
         writeVec(os, h.rolling, binary);
+        if (!binary) os << '\n';
+    }
+    for (const Vec3& f : s.externalForce)
+    {
+        writeVec(os, f, binary);
+        if (!binary) os << '\n';
+    }
+    for (const Vec3& t : s.externalTorque)
+    {
+        writeVec(os, t, binary);
         if (!binary) os << '\n';
     }
     if (!os)
@@ -193,6 +205,9 @@ Snapshot readSnapshot(const std::string& path)
     const std::int64_t npair = text.integer("pair count");
     text.keyword("walls");
     const std::int64_t nwall = text.integer("wall-contact count");
+    text.keyword("external");
+    const bool hasForce = text.integer("external force flag") != 0;
+    const bool hasTorque = text.integer("external torque flag") != 0;
     text.keyword("data");
     is.get(); // the newline after 'data'
     if (np < 0 || npair < 0 || nwall < 0)
@@ -228,6 +243,16 @@ Snapshot readSnapshot(const std::string& path)
         h.normal = r.vec("wall-contact normal");
         h.tangential = r.vec("wall spring");
         h.rolling = r.vec("wall rolling spring");
+    }
+    if (hasForce)
+    {
+        s.externalForce.resize(p.size());
+        for (Vec3& f : s.externalForce) f = r.vec("external force");
+    }
+    if (hasTorque)
+    {
+        s.externalTorque.resize(p.size());
+        for (Vec3& t : s.externalTorque) t = r.vec("external torque");
     }
     return s;
 }
