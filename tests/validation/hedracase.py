@@ -1,3 +1,4 @@
+import math
 """Hedra validation helpers: write small demPimpleFoam cases, run them, read
 their results. Used by the validation scripts in this folder (CTest)."""
 import os
@@ -235,3 +236,44 @@ def check(label, value, ref, tol, results):
     print(f"{'PASS' if ok else 'FAIL'}: {label}: {value:.6g} vs {ref:.6g}"
           f" (rel. error {err:.3g}, tolerance {tol:g})")
     return ok
+
+
+def measure_bed(case, tstr, tEnd, W, zFloor, d):
+    """Bed of a packed-bed case from the DEM state files: particle volume Vs,
+    cross-section A, height L (mean top of the highest 2 % of particles),
+    voidage 1 - Vs/(A L) and the voidage of the core slab; prints them and the
+    largest vertical particle displacement between tstr and tEnd."""
+    def read_state(path):
+        with open(path) as f:
+            lines = f.read().split("\n")
+        i = lines.index("data")
+        n = int([l for l in lines if l.startswith("particles ")][0].split()[1])
+        P = []
+        for l in lines[i + 1:i + 1 + n]:
+            v = l.split()
+            P.append((float(v[2]), float(v[7]), float(v[8]), float(v[9]), int(v[0])))
+        return P
+
+    def cap(r, h):  # volume of a sphere cap of height h
+        h = min(max(h, 0.0), 2 * r)
+        return math.pi * h * h * (3 * r - h) / 3
+
+    def slab_volume(r, zc, za, zb):  # part of the sphere between za and zb
+        return cap(r, zb - (zc - r)) - cap(r, za - (zc - r))
+
+    P = read_state(os.path.join(case, tstr, "polyDEM/state"))
+    Pend = read_state(os.path.join(case, f"{tEnd:g}", "polyDEM/state"))
+    Vs = sum(4 / 3 * math.pi * r**3 for r, x, y, z, i in P)
+    A = W * W
+    ztop = sorted(z + r for r, x, y, z, i in P)[-max(1, len(P) // 50):]
+    zTop = sum(ztop) / len(ztop)
+    za, zb = zFloor + 2 * d, zTop - 2 * d
+    epsCore = 1 - sum(slab_volume(r, z, za, zb) for r, x, y, z, i in P) / (A * (zb - za))
+    L = zTop - zFloor
+    eps = 1 - Vs / (A * L)
+    print(f"bed: {len(P)} particles, height L {L*1e3:.3f} mm (mean top of the highest 2 %),"
+          f" mean voidage 1 - Vs/(A L) = {eps:.4f} (core slab voidage {epsCore:.4f})")
+    zEnd = {p[4]: p[3] for p in Pend}
+    shift = max(abs(p[3] - zEnd[p[4]]) for p in P)
+    print(f"largest vertical particle displacement during the flow: {shift*1e3:.4f} mm")
+    return {"Vs": Vs, "A": A, "L": L, "eps": eps, "epsCore": epsCore}
