@@ -1,0 +1,265 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ibParticles.H"
+#include "Time.H"
+#include "mathematicalConstants.H"
+#include "demSimulation.H"
+#include "demPropertiesReader.H"
+#include "polyDEM/System.hpp"
+#include "polyDEM/Engine.hpp"
+#include "polyDEM/Quaternion.hpp"
+#include "polyDEM/Error.hpp"
+
+namespace
+{
+Foam::vector toV(const polydem::Vec3& v)
+{
+    return Foam::vector(v.x, v.y, v.z);
+}
+polydem::Vec3 toP(const Foam::vector& v)
+{
+    return polydem::Vec3{v.x(), v.y(), v.z()};
+}
+}
+
+
+void Foam::ibParticles::readFixed()
+{
+    const List<dictionary> list(dict_.lookup("bodies"));
+    bodies_.setSize(list.size());
+    forAll(list, i)
+    {
+        const dictionary& d = list[i];
+        ibBody& b = bodies_[i];
+        const word shape(d.get<word>("shape"));
+        if (shape != "sphere")
+        {
+            FatalIOErrorInFunction(d)
+                << "motion fixed supports shape sphere only (polyhedra come"
+                << " from the DEM: motion polyDEM)" << exit(FatalIOError);
+        }
+        b.id = i;
+        b.radius = d.get<scalar>("radius");
+        b.volume = 4.0/3.0*constant::mathematical::pi*pow3(b.radius);
+        b.position = d.get<vector>("position");
+        b.velocity = d.getOrDefault<vector>("velocity", Zero);
+        b.omega = d.getOrDefault<vector>("omega", Zero);
+    }
+}
+
+
+void Foam::ibParticles::readDEM()
+{
+    const polydem::Engine& engine = dem_->system().engine();
+    const polydem::SimulationConfig& cfg = dem_->input().config();
+    const polydem::ParticleState s = engine.particles();
+
+    bodies_.setSize(s.size());
+    forAll(bodies_, i)
+    {
+        ibBody& b = bodies_[i];
+        b.id = label(s.id[i]);
+        b.position = toV(s.position[i]);
+        b.velocity = toV(s.velocity[i]);
+        b.omega = toV(s.omega[i]);
+        b.radius = s.radius[i];
+        const polydem::ParticleType& type = cfg.types[s.type[i]];
+        if (type.shape == polydem::ShapeKind::polyhedron)
+        {
+            const polydem::ConvexShape& shape = cfg.shapes[type.shapeIndex];
+            b.polyhedron = true;
+            b.volume = shape.volume;
+            const polydem::Quaternion& q = s.orientation[i];
+            const vector e0 = toV(polydem::rotate(q, polydem::Vec3{1, 0, 0}));
+            const vector e1 = toV(polydem::rotate(q, polydem::Vec3{0, 1, 0}));
+            const vector e2 = toV(polydem::rotate(q, polydem::Vec3{0, 0, 1}));
+            b.worldToBody = tensor(e0, e1, e2);
+            const label nf = shape.faceNormals.size();
+            b.faceNormals.setSize(nf);
+            b.faceOffsets.setSize(nf);
+            for (label f = 0; f < nf; ++f)
+            {
+                b.faceNormals[f] = toV(shape.faceNormals[f]);
+                b.faceOffsets[f] = shape.faceOffsets[f];
+            }
+        }
+        else
+        {
+            b.polyhedron = false;
+            b.volume = 4.0/3.0*constant::mathematical::pi*pow3(b.radius);
+        }
+    }
+}
+
+
+Foam::ibParticles::ibParticles(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "ibProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    motion_(dict_.get<word>("motion")),
+    internalInertia_(dict_.getOrDefault<bool>("internalInertia", true)),
+    g_(dict_.getOrDefault<vector>("g", vector(0, 0, -9.81)))
+{
+    if (motion_ == "fixed")
+    {
+        readFixed();
+    }
+    else if (motion_ == "polyDEM")
+    {
+        demProperties_.reset
+        (
+            new IOdictionary
+            (
+                IOobject
+                (
+                    "demProperties",
+                    mesh.time().constant(),
+                    mesh,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE
+                )
+            )
+        );
+        try
+        {
+            dem_.reset(new demSimulation(mesh.time(), *demProperties_));
+            g_ = toV(dem_->input().config().gravity);
+        }
+        catch (const polydem::Error& err)
+        {
+            demPropertiesReader::reportError(err, *demProperties_);
+        }
+        readDEM();
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Unknown motion " << motion_ << " (fixed | polyDEM)"
+            << exit(FatalIOError);
+    }
+
+    previousVelocity_.setSize(bodies_.size());
+    forAll(bodies_, i)
+    {
+        previousVelocity_[i] = bodies_[i].velocity;
+    }
+
+    if (Pstream::master())
+    {
+        const fileName dir
+        (
+            mesh.time().globalPath()/"postProcessing"/"ibForces"
+           /mesh.time().timeName()
+        );
+        mkDir(dir);
+        out_.reset(new OFstream(dir/"forces.dat"));
+        *out_ << "# time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz" << nl;
+    }
+}
+
+
+Foam::ibParticles::~ibParticles()
+{}
+
+
+void Foam::ibParticles::evolve
+(
+    const List<vector>& F,
+    const List<vector>& T,
+    scalar rhoFluid
+)
+{
+    if (motion_ == "fixed")
+    {
+        return;
+    }
+
+    const scalar dt = mesh_.time().deltaTValue();
+    std::vector<polydem::Vec3> force(F.size()), torque(T.size());
+    forAll(F, i)
+    {
+        const ibBody& b = bodies_[i];
+        vector Fi = F[i] - rhoFluid*b.volume*g_;
+        if (internalInertia_)
+        {
+            Fi += rhoFluid*b.volume*(b.velocity - previousVelocity_[i])/dt;
+        }
+        force[i] = toP(Fi);
+        torque[i] = toP(T[i]);
+        previousVelocity_[i] = b.velocity;
+    }
+
+    try
+    {
+        dem_->system().engine().setExternalForces(force, torque);
+        dem_->evolve();
+    }
+    catch (const polydem::Error& err)
+    {
+        demPropertiesReader::reportError(err, *demProperties_);
+    }
+
+    // The engine's order may change (re-sorting): match by id
+    Map<vector> oldU;
+    forAll(bodies_, i)
+    {
+        oldU.set(bodies_[i].id, previousVelocity_[i]);
+    }
+    readDEM();
+    previousVelocity_.setSize(bodies_.size());
+    forAll(bodies_, i)
+    {
+        previousVelocity_[i] =
+            oldU.lookup(bodies_[i].id, bodies_[i].velocity);
+    }
+}
+
+
+void Foam::ibParticles::writeForces
+(
+    const List<vector>& F,
+    const List<vector>& T
+) const
+{
+    if (!out_)
+    {
+        return;
+    }
+    OFstream& os = *out_;
+    forAll(bodies_, i)
+    {
+        const ibBody& b = bodies_[i];
+        os  << mesh_.time().timeOutputValue() << ' ' << b.id << ' '
+            << b.position.x() << ' ' << b.position.y() << ' '
+            << b.position.z() << ' '
+            << b.velocity.x() << ' ' << b.velocity.y() << ' '
+            << b.velocity.z() << ' '
+            << F[i].x() << ' ' << F[i].y() << ' ' << F[i].z() << ' '
+            << T[i].x() << ' ' << T[i].y() << ' ' << T[i].z() << nl;
+    }
+    os.flush();
+}
+
+
+void Foam::ibParticles::write()
+{
+    if (dem_ && mesh_.time().writeTime())
+    {
+        dem_->write();
+    }
+}
+
+
+// ************************************************************************* //
