@@ -191,7 +191,7 @@ int main(int argc, char** argv)
                                                      a * std::cos(2 * M_PI * u2), b * std::sin(2 * M_PI * u3)});
             p.velocity[i] = Vec3(0.05 * (uniform() - 0.5), 0.05 * (uniform() - 0.5), -0.5);
         }
-        sys.completeSphereProperties(st.particles);
+        sys.completeMassProperties(st.particles);
         const double dtMax = sys.criticalTimeStep(st.particles);
         sys.initialise(std::move(st));
 

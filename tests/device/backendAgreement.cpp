@@ -120,7 +120,7 @@ Snapshot packedStart()
             st.particles.orientation[i] = normalised(Quaternion{std::cos(0.7 * i), std::sin(1.3 * i),
                                                                 std::cos(2.1 * i), std::sin(0.5 * i)});
         }
-        s.completeSphereProperties(st.particles);
+        s.completeMassProperties(st.particles);
     }
     s.initialise(st);
     s.advance(polyhedra ? 20000 : 15000);

@@ -37,8 +37,10 @@ public:
     //  time (Hertz) or 1/10 of the undamped contact duration (linear)
     double criticalTimeStep(const ParticleState& particles) const;
 
-    //- Fill mass and inertia of solid spheres from radius and type density
-    void completeSphereProperties(ParticleState& particles) const;
+    //- Fill mass and principal inertia of particles that have none, from their
+    //  type's density and shape (solid spheres: the radius; polyhedra: the
+    //  convex shape, which also sets the bounding radius)
+    void completeMassProperties(ParticleState& particles) const;
 
     //- Make a particle state of spheres of one type
     ParticleState makeSpheres

@@ -186,7 +186,7 @@ System::~System()
 }
 
 
-void System::completeSphereProperties(ParticleState& p) const
+void System::completeMassProperties(ParticleState& p) const
 {
     for (std::size_t i = 0; i < p.size(); ++i)
     {
@@ -227,7 +227,7 @@ ParticleState System::makeSpheres
         p.mass[i] = 0;
         p.position[i] = positions[i];
     }
-    completeSphereProperties(p);
+    completeMassProperties(p);
     return p;
 }
 
@@ -275,7 +275,7 @@ double System::criticalTimeStep(const ParticleState& p) const
 
 void System::initialise(Snapshot state)
 {
-    completeSphereProperties(state.particles);
+    completeMassProperties(state.particles);
     for (std::size_t i = 0; i < state.particles.size(); ++i)
     {
         if (state.particles.type[i] < 0 || state.particles.type[i] >= int(config_.types.size()))

@@ -56,7 +56,7 @@ inline Snapshot polyhedraAt(const System& s, const std::vector<Vec3>& x, const s
         st.particles.position[i] = x[i];
         st.particles.orientation[i] = q.empty() ? Quaternion() : q[i];
     }
-    s.completeSphereProperties(st.particles);
+    s.completeMassProperties(st.particles);
     return st;
 }
 
