@@ -56,3 +56,22 @@ setEntry()
     foamDictionary -entry "$2" -set "$3" "$1" >/dev/null \
         || fail "foamDictionary could not set $2 in $1"
 }
+
+# compareStates ONE_GO RESTARTED WHAT: pass when the two polyDEM state files are
+# identical to the byte; otherwise print the largest relative difference and fail
+compareStates()
+{
+    [ -f "$1" ] && [ -f "$2" ] || fail "missing state files ($1, $2)"
+    if cmp -s "$1" "$2"
+    then
+        echo "PASS: restarted $3 is identical (bytes) to the one-go run"
+        exit 0
+    fi
+    awk 'NR==FNR { for (i = 1; i <= NF; i++) v[FNR, i] = $i; next }
+         { for (i = 1; i <= NF; i++) if ($i + 0 == $i) {
+             d = $i - v[FNR, i]; if (d < 0) d = -d
+             s = ($i < 0 ? -$i : $i); if (s < 1e-300) s = 1e-300
+             if (d / s > m) m = d / s } }
+         END { printf "largest relative difference %g\n", m }' "$1" "$2"
+    fail "restarted $3 differs from the one-go run"
+}
