@@ -100,6 +100,18 @@ Foam::label Foam::demSimulation::computeStepsPerDeltaT() const
 }
 
 
+Foam::fileName Foam::demSimulation::casePath() const
+{
+    return globalOutput_ ? runTime_.globalPath() : runTime_.path();
+}
+
+
+Foam::fileName Foam::demSimulation::timePath() const
+{
+    return casePath()/runTime_.timeName();
+}
+
+
 void Foam::demSimulation::startSystem(polydem::Snapshot state)
 {
     polydem::SimulationConfig config = input_.configWith(wallActive_, wallMap_);
@@ -434,7 +446,7 @@ void Foam::demSimulation::writePolyhedra
 
 void Foam::demSimulation::writeState()
 {
-    const fileName dir(runTime_.timePath()/"polyDEM");
+    const fileName dir(timePath()/"polyDEM");
     mkDir(dir);
     const polydem::Snapshot state = system_->engine().snapshot();
     polydem::writeSnapshot(dir/"state", state, input_.stateFormat());
@@ -446,13 +458,13 @@ void Foam::demSimulation::writeState()
         const scalar t = readScalar(runTime_.timeName());
         polydem::writeParticlesVtp(dir/"particles.vtp", state.particles);
         particlesPvd_.add(t, rel/"particles.vtp");
-        particlesPvd_.write(runTime_.path()/"particles.pvd");
+        particlesPvd_.write(casePath()/"particles.pvd");
 
         if (input_.hasPolyhedra())
         {
             writePolyhedra(dir/"polyhedra.vtp", state.particles);
             polyhedraPvd_.add(t, rel/"polyhedra.vtp");
-            polyhedraPvd_.write(runTime_.path()/"polyhedra.pvd");
+            polyhedraPvd_.write(casePath()/"polyhedra.pvd");
         }
 
         std::vector<int> ids;
@@ -461,7 +473,7 @@ void Foam::demSimulation::writeState()
         {
             polydem::writeSurfaceVtp(dir/"walls.vtp", walls, ids, "wall");
             wallsPvd_.add(t, rel/"walls.vtp");
-            wallsPvd_.write(runTime_.path()/"walls.pvd");
+            wallsPvd_.write(casePath()/"walls.pvd");
         }
     }
     Info<< "DEM t = " << state.time << " s: wrote " << dir << endl;
@@ -473,11 +485,13 @@ void Foam::demSimulation::writeState()
 Foam::demSimulation::demSimulation
 (
     const Time& runTime,
-    const IOdictionary& properties
+    const IOdictionary& properties,
+    const bool globalOutput
 )
 :
     runTime_(runTime),
     properties_(properties),
+    globalOutput_(globalOutput),
     input_(properties),
     system_(),
     wallActive_(input_.walls().size(), true),
@@ -504,7 +518,7 @@ Foam::demSimulation::demSimulation
         }
     }
 
-    const fileName statePath(runTime_.timePath()/"polyDEM"/"state");
+    const fileName statePath(timePath()/"polyDEM"/"state");
     const int64_t startStep = int64_t(std::llround(runTime_.value()/dt));
 
     // Walls already removed at the start time
@@ -534,19 +548,19 @@ Foam::demSimulation::demSimulation
         }
         startSystem(std::move(state));
 
-        particlesPvd_.read(runTime_.path()/"particles.pvd", runTime_.value());
-        wallsPvd_.read(runTime_.path()/"walls.pvd", runTime_.value());
-        polyhedraPvd_.read(runTime_.path()/"polyhedra.pvd", runTime_.value());
+        particlesPvd_.read(casePath()/"particles.pvd", runTime_.value());
+        wallsPvd_.read(casePath()/"walls.pvd", runTime_.value());
+        polyhedraPvd_.read(casePath()/"polyhedra.pvd", runTime_.value());
         const fileName rel(runTime_.timeName()/"polyDEM");
-        if (isFile(runTime_.timePath()/"polyDEM"/"particles.vtp"))
+        if (isFile(timePath()/"polyDEM"/"particles.vtp"))
         {
             particlesPvd_.add(runTime_.value(), rel/"particles.vtp");
         }
-        if (isFile(runTime_.timePath()/"polyDEM"/"walls.vtp"))
+        if (isFile(timePath()/"polyDEM"/"walls.vtp"))
         {
             wallsPvd_.add(runTime_.value(), rel/"walls.vtp");
         }
-        if (isFile(runTime_.timePath()/"polyDEM"/"polyhedra.vtp"))
+        if (isFile(timePath()/"polyDEM"/"polyhedra.vtp"))
         {
             polyhedraPvd_.add(runTime_.value(), rel/"polyhedra.vtp");
         }
@@ -606,7 +620,7 @@ Foam::demSimulation::demSimulation
     // Summary
     const fileName summaryDir
     (
-        runTime_.path()/"postProcessing"/"demFoam"/runTime_.timeName()
+        casePath()/"postProcessing"/"demFoam"/runTime_.timeName()
     );
     mkDir(summaryDir);
     summary_.reset(new OFstream(summaryDir/"summary.dat"));
