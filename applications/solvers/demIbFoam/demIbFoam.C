@@ -85,6 +85,11 @@ int main(int argc, char *argv[])
         // Immersed boundary: bodies at the start of the step
         ib.correct(U, p, phi, rhoFluid.value(), particles.bodies());
 
+        // Fluid momentum inside the bodies at the end of the step
+        // (internal-fluid inertia, ibParticles: internalFluid integrated)
+        List<vector> Pin, Lin;
+        ib.bodyMomentum(U, particles.bodies(), Pin, Lin);
+
         const List<vector> F(ib.force());
         const List<vector> T(ib.torque());
         particles.writeForces(F, T);
@@ -94,7 +99,7 @@ int main(int argc, char *argv[])
         }
 
         // DEM sub-cycled over the fluid step, then the new solid mask
-        particles.evolve(F, T, rhoFluid.value());
+        particles.evolve(F, T, rhoFluid.value(), Pin, Lin);
         ib.update(particles.bodies());
 
         particles.write();

@@ -76,8 +76,8 @@ Foam::directForcingIB::directForcingIB
             "phiIB",
             mesh_.time().timeName(),
             mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE
+            IOobject::READ_IF_PRESENT,  // the solver's initial guess: a
+            IOobject::AUTO_WRITE        // restart continues bit for bit
         ),
         mesh_,
         dimensionedScalar(dimArea/dimTime, Zero),
@@ -90,7 +90,6 @@ Foam::directForcingIB::directForcingIB
         FatalIOErrorInFunction(dict)
             << "nSubSamples must be >= 1, not " << nSub_ << exit(FatalIOError);
     }
-    phiIB_ == dimensionedScalar(dimArea/dimTime, Zero);
     mesh_.setFluxRequired(phiIB_.name());
 
     const pointField& pts = mesh_.points();
@@ -262,6 +261,43 @@ void Foam::directForcingIB::correctVelocity
     Pstream::listCombineScatter(force_);
     Pstream::listCombineGather(torque_, plusEqOp<vector>());
     Pstream::listCombineScatter(torque_);
+}
+
+
+void Foam::directForcingIB::bodyMomentum
+(
+    const volVectorField& U,
+    const UList<ibBody>& bodies,
+    List<vector>& P,
+    List<vector>& L
+) const
+{
+    P.setSize(bodies.size());
+    L.setSize(bodies.size());
+    P = Zero;
+    L = Zero;
+
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& lam = lambda_.primitiveField();
+    const vectorField& u = U.primitiveField();
+
+    forAll(u, celli)
+    {
+        const label bi = cellBody_[celli];
+        if (bi < 0)
+        {
+            continue;
+        }
+        const vector m = lam[celli]*V[celli]*u[celli];
+        P[bi] += m;
+        L[bi] += (C[celli] - bodies[bi].position) ^ m;
+    }
+
+    Pstream::listCombineGather(P, plusEqOp<vector>());
+    Pstream::listCombineScatter(P);
+    Pstream::listCombineGather(L, plusEqOp<vector>());
+    Pstream::listCombineScatter(L);
 }
 
 

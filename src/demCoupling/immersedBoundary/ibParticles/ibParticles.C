@@ -65,6 +65,7 @@ void Foam::ibParticles::readDEM()
         b.velocity = toV(s.velocity[i]);
         b.omega = toV(s.omega[i]);
         b.radius = s.radius[i];
+        b.mass = s.mass[i];
         const polydem::ParticleType& type = cfg.types[s.type[i]];
         if (type.shape == polydem::ShapeKind::polyhedron)
         {
@@ -109,9 +110,26 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
         )
     ),
     motion_(dict_.get<word>("motion")),
-    internalInertia_(dict_.getOrDefault<bool>("internalInertia", true)),
+    internalFluid_
+    (
+        dict_.getOrDefault<bool>("internalInertia", true)
+      ? dict_.getOrDefault<word>("internalFluid", "integrated")
+      : word("none")
+    ),
     g_(dict_.getOrDefault<vector>("g", vector(0, 0, -9.81)))
 {
+    if
+    (
+        internalFluid_ != "integrated"
+     && internalFluid_ != "rigid"
+     && internalFluid_ != "none"
+    )
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Unknown internalFluid " << internalFluid_
+            << " (integrated | rigid | none)" << exit(FatalIOError);
+    }
+
     if (motion_ == "fixed")
     {
         readFixed();
@@ -132,16 +150,26 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
                 )
             )
         );
-        try
+        // The DEM runs once, on the master, writing to the case folder;
+        // the other ranks get the bodies (scatterBodies)
+        if (Pstream::master())
         {
-            dem_.reset(new demSimulation(mesh.time(), *demProperties_));
-            g_ = toV(dem_->input().config().gravity);
+            try
+            {
+                dem_.reset
+                (
+                    new demSimulation(mesh.time(), *demProperties_, true)
+                );
+                g_ = toV(dem_->input().config().gravity);
+            }
+            catch (const polydem::Error& err)
+            {
+                demPropertiesReader::reportError(err, *demProperties_);
+            }
+            readDEM();
         }
-        catch (const polydem::Error& err)
-        {
-            demPropertiesReader::reportError(err, *demProperties_);
-        }
-        readDEM();
+        Pstream::scatter(g_);
+        scatterBodies(bodies_);
     }
     else
     {
@@ -155,6 +183,8 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
     {
         previousVelocity_[i] = bodies_[i].velocity;
     }
+    readState();
+    readLubrication();
 
     if (Pstream::master())
     {
@@ -165,7 +195,8 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
         );
         mkDir(dir);
         out_.reset(new OFstream(dir/"forces.dat"));
-        *out_ << "# time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz" << nl;
+        *out_ << "# time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz FLx FLy FLz"
+              << nl;
     }
 }
 
@@ -178,7 +209,9 @@ void Foam::ibParticles::evolve
 (
     const List<vector>& F,
     const List<vector>& T,
-    scalar rhoFluid
+    scalar rhoFluid,
+    const List<vector>& P,
+    const List<vector>& L
 )
 {
     if (motion_ == "fixed")
@@ -192,23 +225,43 @@ void Foam::ibParticles::evolve
     {
         const ibBody& b = bodies_[i];
         vector Fi = F[i] - rhoFluid*b.volume*g_;
-        if (internalInertia_)
+        vector Ti = T[i];
+        if (internalFluid_ == "rigid")
         {
             Fi += rhoFluid*b.volume*(b.velocity - previousVelocity_[i])/dt;
         }
+        else if (internalFluid_ == "integrated")
+        {
+            // Internal-fluid inertia from the fluid itself (Kempe &
+            // Froehlich 2012); first step: rigid, L = 0
+            const vector P0 =
+                previousP_.lookup(b.id, b.volume*previousVelocity_[i]);
+            const vector L0 = previousL_.lookup(b.id, Zero);
+            Fi += rhoFluid*(P[i] - P0)/dt;
+            Ti += rhoFluid*(L[i] - L0)/dt;
+            previousP_.set(b.id, P[i]);
+            previousL_.set(b.id, L[i]);
+        }
+        if (lubForce_.size() == bodies_.size())
+        {
+            Fi += lubForce_[i];
+        }
         force[i] = toP(Fi);
-        torque[i] = toP(T[i]);
+        torque[i] = toP(Ti);
         previousVelocity_[i] = b.velocity;
     }
 
-    try
+    if (dem_)
     {
-        dem_->system().engine().setExternalForces(force, torque);
-        dem_->evolve();
-    }
-    catch (const polydem::Error& err)
-    {
-        demPropertiesReader::reportError(err, *demProperties_);
+        try
+        {
+            dem_->system().engine().setExternalForces(force, torque);
+            dem_->evolve();
+        }
+        catch (const polydem::Error& err)
+        {
+            demPropertiesReader::reportError(err, *demProperties_);
+        }
     }
 
     // The engine's order may change (re-sorting): match by id
@@ -217,13 +270,18 @@ void Foam::ibParticles::evolve
     {
         oldU.set(bodies_[i].id, previousVelocity_[i]);
     }
-    readDEM();
+    if (Pstream::master())
+    {
+        readDEM();
+    }
+    scatterBodies(bodies_);
     previousVelocity_.setSize(bodies_.size());
     forAll(bodies_, i)
     {
         previousVelocity_[i] =
             oldU.lookup(bodies_[i].id, bodies_[i].velocity);
     }
+    updateLubrication();
 }
 
 
@@ -247,7 +305,9 @@ void Foam::ibParticles::writeForces
             << b.velocity.x() << ' ' << b.velocity.y() << ' '
             << b.velocity.z() << ' '
             << F[i].x() << ' ' << F[i].y() << ' ' << F[i].z() << ' '
-            << T[i].x() << ' ' << T[i].y() << ' ' << T[i].z() << nl;
+            << T[i].x() << ' ' << T[i].y() << ' ' << T[i].z() << ' '
+            << lubForce_[i].x() << ' ' << lubForce_[i].y() << ' '
+            << lubForce_[i].z() << nl;
     }
     os.flush();
 }
@@ -259,6 +319,7 @@ void Foam::ibParticles::write()
     {
         dem_->write();
     }
+    writeState();
 }
 
 
