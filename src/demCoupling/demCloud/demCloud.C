@@ -145,6 +145,7 @@ Foam::demCloud::demCloud
     lastParticleMomentum_(Zero),
     lastFluidMomentum_(Zero),
     nOutside_(0),
+    maxCompletion_(0),
     clock_(),
     timeDem_(0),
     timeParticles_(0),
@@ -171,10 +172,12 @@ Foam::demCloud::demCloud
         typeDensity_.setSize(typeNames_.size());
         sphericity_.setSize(typeNames_.size());
         crosswiseSphericity_.setSize(typeNames_.size());
+        shapes_.setSize(typeNames_.size());
         forAll(typeDensity_, i)
         {
             typeDensity_[i] = backend_->typeDensity(i);
             backend_->typeShape(i, sphericity_[i], crosswiseSphericity_[i]);
+            backend_->typePolyhedron(i, shapes_[i]);
         }
     }
     broadcast(sphericity_);
@@ -182,6 +185,19 @@ Foam::demCloud::demCloud
     broadcast(nSubSteps_);
     broadcast(typeNames_);
     broadcast(typeDensity_);
+    {
+        label nTypes = shapes_.size();
+        broadcast(nTypes);
+        shapes_.setSize(nTypes);
+        for (demShape& sh : shapes_)
+        {
+            broadcast(sh.vertices);
+            broadcast(sh.faces);
+            broadcast(sh.normals);
+            broadcast(sh.offsets);
+            broadcast(sh.volume);
+        }
+    }
 
     // Sub-cycling: the DEM steps per fluid step given in couplingProperties
     // must be those of the time steps (demSimulation checks the division)
@@ -312,6 +328,7 @@ void Foam::demCloud::updateParticles()
     broadcast(particles_.position);
     broadcast(particles_.velocity);
     broadcast(particles_.omega);
+    broadcast(particles_.orientation);
 
     const label n = particles_.size();
     const scalar pi = constant::mathematical::pi;
@@ -379,10 +396,13 @@ void Foam::demCloud::updateParticles()
     forAll(cell_, i)
     {
         wStart_[i] = wCell_.size();
-        voidFraction_->distribute
+        const label t = particles_.type[i];
+        voidFraction_->distributeShape
         (
             particles_.position[i],
             particles_.radius[i],
+            particles_.orientation[i],
+            t < shapes_.size() && shapes_[t].polyhedron() ? &shapes_[t] : nullptr,
             cell_[i],
             wCell_,
             wWeight_
@@ -404,6 +424,11 @@ void Foam::demCloud::updateParticles()
     }
     wStart_[n] = wCell_.size();
     allSum(wSum);
+    maxCompletion_ = 0;
+    forAll(wSum, i)
+    {
+        maxCompletion_ = max(maxCompletion_, mag(1 - wSum[i]));
+    }
     forAll(cell_, i)
     {
         if (centreEntry[i] >= 0)
@@ -759,6 +784,8 @@ void Foam::demCloud::evolve
     Info<< ", voidfraction min " << gMin(voidfraction_.primitiveField())
         << ", momentum exchange: particles " << lastParticleMomentum_
         << " fluid " << lastFluidMomentum_ << nl
+        << "demCloud: void-fraction weights completed in the centre cells by"
+        << " at most " << maxCompletion_ << " (max |1 - sum w|)" << nl
         << "demCloud: cumulative CPU s: DEM " << timeDem_
         << ", locate+voidfraction " << timeParticles_
         << ", forces+exchange " << timeForces_ << endl;

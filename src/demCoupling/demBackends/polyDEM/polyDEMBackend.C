@@ -1,6 +1,7 @@
 #include "polyDEMBackend.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyDEM/Error.hpp"
+#include "polyDEM/Quaternion.hpp"
 
 namespace Foam
 {
@@ -103,6 +104,40 @@ void Foam::polyDEMBackend::typeShape
 }
 
 
+bool Foam::polyDEMBackend::typePolyhedron(label type, demShape& shape) const
+{
+    const auto& cfg = dem_->input().config();
+    const auto& t = cfg.types[type];
+    if (t.shape != polydem::ShapeKind::polyhedron || t.shapeIndex < 0)
+    {
+        return false;
+    }
+    const polydem::ConvexShape& s = cfg.shapes[t.shapeIndex];
+    shape.vertices.setSize(s.nVertices());
+    forAll(shape.vertices, i)
+    {
+        shape.vertices[i] = demPropertiesReader::toVector(s.vertices[i]);
+    }
+    const label nf = s.nFaces();
+    shape.faces.setSize(nf);
+    shape.normals.setSize(nf);
+    shape.offsets.setSize(nf);
+    for (label f = 0; f < nf; ++f)
+    {
+        face& fc = shape.faces[f];
+        fc.setSize(s.faceStart[f + 1] - s.faceStart[f]);
+        forAll(fc, k)
+        {
+            fc[k] = s.faceVertex[s.faceStart[f] + k];
+        }
+        shape.normals[f] = demPropertiesReader::toVector(s.faceNormals[f]);
+        shape.offsets[f] = s.faceOffsets[f];
+    }
+    shape.volume = s.volume;
+    return true;
+}
+
+
 void Foam::polyDEMBackend::particles(demParticleArrays& p) const
 {
     const polydem::ParticleState s = dem_->system().engine().particles();
@@ -117,6 +152,16 @@ void Foam::polyDEMBackend::particles(demParticleArrays& p) const
         p.position[i] = demPropertiesReader::toVector(s.position[i]);
         p.velocity[i] = demPropertiesReader::toVector(s.velocity[i]);
         p.omega[i] = demPropertiesReader::toVector(s.omega[i]);
+        // Rows of tensor(e0, e1, e2) are the body axes in world coordinates
+        // (world -> body); its transpose turns body into world
+        const polydem::Quaternion& q = s.orientation[i];
+        p.orientation[i] =
+            tensor
+            (
+                demPropertiesReader::toVector(polydem::rotate(q, {1, 0, 0})),
+                demPropertiesReader::toVector(polydem::rotate(q, {0, 1, 0})),
+                demPropertiesReader::toVector(polydem::rotate(q, {0, 0, 1}))
+            ).T();
     }
 }
 
