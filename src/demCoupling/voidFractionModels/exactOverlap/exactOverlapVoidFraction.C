@@ -264,6 +264,13 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
             << "sphereTolerance must be in (0, 0.01] in " << coeffs_.name()
             << ", got " << sphereTolerance_ << exit(FatalIOError);
     }
+    // Build the mesh's lazily computed search structures now, on every
+    // processor: the tet base points are a collective computation, and a
+    // processor that first needs them while the others wait elsewhere
+    // (e.g. in the sum of the weights) would hang
+    (void)mesh.tetBasePtIs();
+    (void)mesh.cellTree();
+    (void)mesh.cellPoints();
 }
 
 
