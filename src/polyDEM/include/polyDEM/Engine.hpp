@@ -59,7 +59,10 @@ public:
     //  current particle order; empty vectors clear them
     virtual void setExternalForces(const std::vector<Vec3>& force, const std::vector<Vec3>& torque) = 0;
 
-    virtual Energies energies() const = 0;
+    //! includeElastic: also the energy stored in the contacts, a host-side
+    //! diagnostic that costs as much as a contact pass (leave it out in
+    //! per-step monitoring)
+    virtual Energies energies(bool includeElastic = true) const = 0;
     virtual Statistics statistics() const = 0;
 
     virtual double time() const = 0;

@@ -21,6 +21,8 @@
 
 #include "DeviceGeometry.hpp"
 
+#include <limits>
+
 #include <thrust/copy.h>
 #include <thrust/device_vector.h>
 #include <thrust/execution_policy.h>
@@ -575,6 +577,14 @@ struct PairKernel
         const int cnt = nbrOwned[i];
         for (int k = 0; k < cnt; ++k)
         {
+            evaluatePair(i, k);
+        }
+    }
+
+    //- Contact of particle i with its k-th (owned) neighbour
+    PD_HD void evaluatePair(int i, int k) const
+    {
+        {
             const size_t s = size_t(i) * maxNbr + k;
             const int a = i;
             const int b = nbr[s];
@@ -587,7 +597,7 @@ struct PairKernel
                 if (!ov.touching)
                 {
                     release(s);
-                    continue;
+                    return;
                 }
                 
                 ContactKinematics kin;
@@ -608,7 +618,7 @@ struct PairKernel
                 const ContactResult res = evaluateContact(law.law, law.pair(law.typeMaterial[p.type[a]],
                                                           law.typeMaterial[p.type[b]]), kin, pairXi[s], pairMr[s]);
                 store(s, res, armA, armB);
-                continue;
+                return;
             }
             const Vec3 d = p.pos[b] - p.pos[a];
             const double dist = norm(d);
@@ -617,7 +627,7 @@ struct PairKernel
             if (overlap <= 0 || dist <= 0)
             {
                 release(s);
-                continue;
+                return;
             }
             
             ContactKinematics kin;
@@ -637,6 +647,25 @@ struct PairKernel
             const int mb_ = law.typeMaterial[p.type[b]];
             const ContactResult res = evaluateContact(law.law, law.pair(ma_, mb_), kin, pairXi[s], pairMr[s]);
             store(s, res, armA, armB);
+        }
+    }
+};
+
+//- One thread per neighbour slot (GPU): a polyhedron pair is a long serial
+//  computation (clipping), and one thread per particle running through its
+//  list leaves a small system with too few threads and each thread with too
+//  much work. Same pairs, same slots, same results as PairKernel.
+struct PairSlotKernel
+{
+    PairKernel pk;
+
+    PD_HD void operator()(int t) const
+    {
+        const int i = t / pk.maxNbr;
+        const int k = t - i * pk.maxNbr;
+        if (k < pk.nbrOwned[i])
+        {
+            pk.evaluatePair(i, k);
         }
     }
 };
@@ -1226,14 +1255,14 @@ public:
         extTorque_.swap(newTorque);
     }
 
-    Energies energies() const override
+    Energies energies(bool includeElastic = true) const override
     {
         const int n = int(id_.size());
         const auto first = thrust::counting_iterator<int>(0);
         ThrustEngine& self = const_cast<ThrustEngine&>(*this);
         Energies e = thrust::transform_reduce(thrust::device, first, first + n,
                                               KineticEnergy{self.view(), config_.gravity}, Energies(), AddEnergies());
-        e.elastic = elasticEnergy();
+        e.elastic = includeElastic ? elasticEnergy() : 0.0;
         return e;
     }
 
@@ -1755,7 +1784,16 @@ private:
         const auto first = thrust::counting_iterator<int>(0);
         PairKernel pk{k.p, k.law, ptr(nbrOwned_), ptr(nbr_), maxNbr_, ptr(mirrorSlot_), ptr(pairXi_), ptr(pairMr_),
                       ptr(slotTouching_), ptr(slotForce_), ptr(slotTorque_)};
-        thrust::for_each(thrust::device, first, first + n, pk);
+#ifdef __CUDACC__
+        if (int64_t(n) * maxNbr_ < int64_t(std::numeric_limits<int>::max()))
+        {
+            thrust::for_each(thrust::device, first, first + n * maxNbr_, PairSlotKernel{pk});
+        }
+        else
+#endif
+        {
+            thrust::for_each(thrust::device, first, first + n, pk);
+        }
         k.nbrCount = ptr(nbrCount_);
         k.maxNbr = maxNbr_;
         k.slotTouching = ptr(slotTouching_);

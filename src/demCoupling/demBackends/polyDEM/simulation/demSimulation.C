@@ -669,7 +669,7 @@ void Foam::demSimulation::sample()
 {
     const polydem::Engine& engine = system_->engine();
     const polydem::Statistics s = engine.statistics();
-    const polydem::Energies e = engine.energies();
+    const polydem::Energies e = engine.energies(false);  // elastic part not written
     summary_()
         << engine.time() << ' ' << engine.step() << ' '
         << label(s.particles) << ' ' << label(s.contacts) << ' '
@@ -706,7 +706,7 @@ void Foam::demSimulation::report(bool force)
     }
     const polydem::Engine& engine = system_->engine();
     const polydem::Statistics s = engine.statistics();
-    const polydem::Energies e = engine.energies();
+    const polydem::Energies e = engine.energies(false);  // elastic part not written
     // Rates since the last report, or over the whole run for the last line
     const int64_t steps =
         engine.step() - (force ? startStep_ : lastReportStep_);
