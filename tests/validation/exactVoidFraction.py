@@ -25,7 +25,9 @@ Checks:
  (sphere) each of the 8 cells round the node holds V_s/8 to 1e-9 (the
      model's default sphereTolerance 1e-10 per cell);
  (c) 2 ranks (decomposePar simple (2 1 1), the rock straddles the
-     processor boundary): alpha equals the serial alpha to 1e-12.
+     processor boundary): alpha equals the serial alpha to 1e-12;
+ and the same serial case with meshFaces false (cells bounded by faces
+ built from their planes, the path for warped faces) gives alpha to 1e-13.
 """
 import math
 import os
@@ -334,7 +336,14 @@ shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
 place(os.path.join(case, "0/polyDEM/state"))
 par = case + "-np2"
 shutil.copytree(case, par)
+planes = case + "-planes"
+shutil.copytree(case, planes)
+hc._workdirs.append(planes)
+cp = os.path.join(planes, "constant/couplingProperties")
+txt = open(cp).read().replace("alphaMin 1e-3;", "alphaMin 1e-3; meshFaces false;")
+open(cp, "w").write(txt)
 hc.run("demPimpleFoam", case, "log.demPimpleFoam")
+hc.run("demPimpleFoam", planes, "log.demPimpleFoam")
 hc.run("decomposePar", par, "log.decomposePar")
 os.makedirs(os.path.join(par, "processor0/0/polyDEM"), exist_ok=True)
 shutil.copy(os.path.join(case, "0/polyDEM/state"), os.path.join(par, "processor0/0/polyDEM/state"))
@@ -442,6 +451,14 @@ ok = err_s <= 1e-9
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: sphere on a mesh node: each of the 8 cells holds V/8, max relative"
       f" error {err_s:.3g} (<= 1e-9)")
+
+# cells bounded by faces built from their planes (meshFaces false)
+alpha_pl = read_internal(os.path.join(planes, tdir, "voidfraction"))
+dev = max(abs(x - y) for x, y in zip(alpha, alpha_pl))
+ok = dev <= 1e-13
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: cell faces built from the cell planes (meshFaces false) vs mesh faces:"
+      f" max |alpha difference| = {dev:.3g} (<= 1e-13)")
 
 # (c) parallel
 par_alpha = [None] * len(alpha)

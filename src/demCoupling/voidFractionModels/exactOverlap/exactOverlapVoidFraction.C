@@ -3,8 +3,7 @@
 #include "mathematicalConstants.H"
 #include "volMesh.H"
 #include "treeBoundBox.H"
-#include "treeDataCell.H"
-#include "indexedOctree.H"
+#include "Random.H"
 #include "polyDEM/PolyhedronOverlap.hpp"
 
 namespace Foam
@@ -256,7 +255,9 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
 :
     voidFractionModel(modelType, dict, mesh, locate),
     sphereTolerance_(coeffs_.getOrDefault<scalar>("sphereTolerance", 1e-10)),
-    bounds_(mesh.points(), false)
+    meshFaces_(coeffs_.getOrDefault<bool>("meshFaces", true)),
+    bounds_(mesh.points(), false),
+    tree_()
 {
     if (!(sphereTolerance_ > 0) || sphereTolerance_ > 0.01)
     {
@@ -269,8 +270,24 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
     // processor that first needs them while the others wait elsewhere
     // (e.g. in the sum of the weights) would hang
     (void)mesh.tetBasePtIs();
-    (void)mesh.cellTree();
     (void)mesh.cellPoints();
+
+    treeBoundBox overallBb(mesh.points());
+    Random rndGen(261782);
+    overallBb = overallBb.extend(rndGen, 1e-4);
+    overallBb.min() -= point::uniform(ROOTVSMALL);
+    overallBb.max() += point::uniform(ROOTVSMALL);
+    tree_.reset
+    (
+        new indexedOctree<treeDataCell>
+        (
+            treeDataCell(true, mesh, polyMesh::CELL_TETS),
+            overallBb,
+            8,      // maxLevel
+            10,     // leafsize
+            5.0     // duplicity
+        )
+    );
 }
 
 
@@ -282,7 +299,7 @@ Foam::labelList Foam::exactOverlapVoidFraction::candidates
 ) const
 {
     const vector grow(1e-9*bb.span() + vector::one*VSMALL);
-    return mesh_.cellTree().findBox
+    return tree_().findBox
     (
         treeBoundBox(bb.min() - grow, bb.max() + grow)
     );
@@ -299,7 +316,9 @@ Foam::scalar Foam::exactOverlapVoidFraction::polyhedronOverlap
     scalar scale
 ) const
 {
-    const boundBox cellBb(mesh_.points(), mesh_.cellPoints()[celli], false);
+    const pointField& pts = mesh_.points();
+    const labelList& cPoints = mesh_.cellPoints()[celli];
+    const boundBox cellBb(pts, cPoints, false);
     const scalar L = max(scale, mag(cellBb.span()));
     const double tol = polydem::kOverlapPlaneTolerance*L;
 
@@ -315,12 +334,53 @@ Foam::scalar Foam::exactOverlapVoidFraction::polyhedronOverlap
 
     // Particle planes
     const label npf = shape.faces.size();
+    const label npv = xv.size();
     Vec3 pn[polydem::kMaxPolyhedronFaces];
     double pd[polydem::kMaxPolyhedronFaces];
+    Vec3 pv[polydem::kMaxPolyhedronVertices];
     for (label f = 0; f < npf; ++f)
     {
         pn[f] = toP(xn[f]);
         pd[f] = xd[f];
+    }
+    for (label i = 0; i < npv; ++i)
+    {
+        pv[i] = toP(xv[i]);
+    }
+
+    // Early outs (separating planes of the cell and of the particle, the
+    // particle wholly inside the cell)
+    bool allInside = true;
+    for (int j = 0; j < ncp; ++j)
+    {
+        double lo = GREAT, hi = -GREAT;
+        for (label i = 0; i < npv; ++i)
+        {
+            const double sd = polydem::dot(cn[j], pv[i]) - cd[j];
+            lo = min(lo, sd);
+            hi = max(hi, sd);
+        }
+        if (lo >= -tol)
+        {
+            return 0;
+        }
+        allInside = allInside && hi <= 0;
+    }
+    if (allInside)
+    {
+        return shape.volume;
+    }
+    for (label f = 0; f < npf; ++f)
+    {
+        double lo = GREAT;
+        for (const label p : cPoints)
+        {
+            lo = min(lo, polydem::dot(pn[f], toP(pts[p])) - pd[f]);
+        }
+        if (lo >= -tol)
+        {
+            return 0;
+        }
     }
 
     od::BoundaryIntegrals acc;
@@ -332,7 +392,7 @@ Foam::scalar Foam::exactOverlapVoidFraction::polyhedronOverlap
         const face& fc = shape.faces[f];
         forAll(fc, k)
         {
-            bufA[k] = toP(xv[fc[k]]);
+            bufA[k] = pv[fc[k]];
         }
         Vec3* out = nullptr;
         const int n =
@@ -343,27 +403,85 @@ Foam::scalar Foam::exactOverlapVoidFraction::polyhedronOverlap
         }
     }
 
-    // Faces of C (from its planes) inside P (dropped where they coincide
-    // with a face of P of the same orientation: counted once, above)
-    const Vec3 cc = toP(cellBb.centre());
-    const double h = 2*mag(cellBb.span()) + 2*scale;
-    for (int j = 0; j < ncp; ++j)
+    // Faces of C inside P (dropped where they coincide with a face of P of
+    // the same orientation: counted once, above). A cell whose faces are
+    // all planar (within tol) is bounded by its mesh faces; otherwise its
+    // faces are built from its planes (a large square in each plane,
+    // clipped by the cell's planes), so that they close the region of the
+    // planes exactly
+    const cell& cFaces = mesh_.cells()[celli];
+    const faceList& faces = mesh_.faces();
+    const labelList& own = mesh_.faceOwner();
+    bool planar = meshFaces_ && cFaces.size() == ncp;
+    for (const label fi : cFaces)
     {
-        // Square in plane j around the cell centre's projection
-        const Vec3 o = cc - (polydem::dot(cn[j], cc) - cd[j])*cn[j];
-        square(o, cn[j], h, bufA);
-        Vec3* out = nullptr;
-        int n = clipPoly(bufA, bufB, 4, cn, cd, ncp, cn[j], false, tol, out);
-        if (n < 3)
+        if (!planar)
         {
-            continue;
+            break;
         }
-        Vec3* a = out;
-        Vec3* b = (out == bufA) ? bufB : bufA;
-        n = clipPoly(a, b, n, pn, pd, npf, cn[j], true, tol, out);
-        if (n >= 3)
+        const face& f = faces[fi];
+        if (f.size() + npf > nBuf)
         {
-            od::addPolygon(acc, out, n, false);
+            planar = false;
+            break;
+        }
+        const vector& S = mesh_.faceAreas()[fi];
+        const vector u = S/mag(S);
+        const scalar off = u & mesh_.faceCentres()[fi];
+        for (const label p : f)
+        {
+            if (mag((u & pts[p]) - off) > tol)
+            {
+                planar = false;
+                break;
+            }
+        }
+    }
+
+    if (planar)
+    {
+        for (const label fi : cFaces)
+        {
+            const face& f = faces[fi];
+            const bool owner = own[fi] == celli;
+            const label m = f.size();
+            for (label k = 0; k < m; ++k)
+            {
+                bufA[k] = toP(pts[f[owner ? k : m - 1 - k]]);
+            }
+            vector u = mesh_.faceAreas()[fi];
+            u /= (owner ? 1 : -1)*mag(u);
+            Vec3* out = nullptr;
+            const int n =
+                clipPoly(bufA, bufB, m, pn, pd, npf, toP(u), true, tol, out);
+            if (n >= 3)
+            {
+                od::addPolygon(acc, out, n, false);
+            }
+        }
+    }
+    else
+    {
+        const Vec3 cc = toP(cellBb.centre());
+        const double h = 2*mag(cellBb.span()) + 2*scale;
+        for (int j = 0; j < ncp; ++j)
+        {
+            // Square in plane j around the cell centre's projection
+            const Vec3 o = cc - (polydem::dot(cn[j], cc) - cd[j])*cn[j];
+            square(o, cn[j], h, bufA);
+            Vec3* out = nullptr;
+            int n = clipPoly(bufA, bufB, 4, cn, cd, ncp, cn[j], false, tol, out);
+            if (n < 3)
+            {
+                continue;
+            }
+            Vec3* a = out;
+            Vec3* b = (out == bufA) ? bufB : bufA;
+            n = clipPoly(a, b, n, pn, pd, npf, cn[j], true, tol, out);
+            if (n >= 3)
+            {
+                od::addPolygon(acc, out, n, false);
+            }
         }
     }
 
