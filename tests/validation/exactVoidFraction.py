@@ -27,7 +27,13 @@ Checks:
  (c) 2 ranks (decomposePar simple (2 1 1), the rock straddles the
      processor boundary): alpha equals the serial alpha to 1e-12;
  and the same serial case with meshFaces false (cells bounded by faces
- built from their planes, the path for warped faces) gives alpha to 1e-13.
+ built from their planes, the path for warped faces) gives alpha to 1e-13;
+ (d) the same particles in the mesh sheared by x -> A x (parallelepiped
+     cells, all faces oblique): weights sum to 1 within 1e-10 (the
+     spheres' sphereTolerance: their sections are general polygons whose
+     kinks the adaptive quadrature resolves to its tolerance; the
+     polyhedra are checked per cell), cube and rock per cell against
+     det(A) V(A^-1 P n B) from the python clipper, |error| <= 1e-10 V_p.
 """
 import math
 import os
@@ -49,9 +55,34 @@ sph2_c = (0.1283, 0.0137, 0.0262)
 ds = 0.012
 
 
-def write_case(case):
+# Sheared mesh of (d): x -> A x (parallelepiped cells, planar faces)
+A = ((1.0, 0.1, 0.3), (0.15, 1.0, 0.2), (0.05, -0.1, 1.0))
+
+
+def amap(M, x):
+    return tuple(sum(M[i][j] * x[j] for j in range(3)) for i in range(3))
+
+
+def inverse(M):
+    (a, b, c), (d, e, f), (g, h_, i) = M
+    det = a * (e * i - f * h_) - b * (d * i - f * g) + c * (d * h_ - e * g)
+    inv = ((e * i - f * h_, c * h_ - b * i, b * f - c * e),
+           (f * g - d * i, a * i - c * g, c * d - a * f),
+           (d * h_ - e * g, b * g - a * h_, a * e - b * d))
+    return tuple(tuple(x / det for x in row) for row in inv), det
+
+
+def write_case(case, M=None):
     hc.block_mesh(case, (0, 0, 0), (0.14, 0.04, 0.04), N,
                   {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
+    if M is not None:
+        bm = os.path.join(case, "system/blockMeshDict")
+        txt = open(bm).read()
+        body = txt[txt.index("vertices"):txt.index(");", txt.index("vertices"))]
+        pts = re.findall(r"\(([-0-9.e]+) ([-0-9.e]+) ([-0-9.e]+)\)", body)
+        new = "vertices\n(\n" + "".join(
+            "    (%r %r %r)\n" % amap(M, tuple(float(x) for x in p)) for p in pts) + ""
+        open(bm, "w").write(txt.replace(body, new))
     hc.foamfile(os.path.join(case, "system/controlDict"), "controlDict", f"""
 application demPimpleFoam;
 startFrom latestTime;
@@ -116,8 +147,9 @@ forceModels (DiFelice pressureGradient);
 """)
 
 
-def place(state):
-    """Rewrite the particles of a state file: cube, rock, spheres by radius."""
+def place(state, M=None):
+    """Rewrite the particles of a state file: cube, rock, spheres by radius
+    (centres mapped by M if given)."""
     lines = open(state).read().split("\n")
     i0 = lines.index("data") + 1
     n = int([l for l in lines if l.startswith("particles ")][0].split()[1])
@@ -133,6 +165,8 @@ def place(state):
             c, qq = cube_c, (1, 0, 0, 0)
         else:
             c, qq = rock_c, rock_q
+        if M is not None:
+            c = amap(M, c)
         v[7:10] = [repr(float(x)) for x in c]
         v[10:14] = [repr(float(x)) for x in qq]
         v[14:26] = ["0"] * 12
@@ -350,6 +384,16 @@ shutil.copy(os.path.join(case, "0/polyDEM/state"), os.path.join(par, "processor0
 mpi = ("LD_LIBRARY_PATH=/usr/lib/openmpi-system:$LD_LIBRARY_PATH OMPI_ALLOW_RUN_AS_ROOT=1 "
        "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 mpirun -np 2 demPimpleFoam -parallel")
 hc.run(mpi, par, "log.demPimpleFoam")
+sheared = hc.workdir("exactVoidFraction-sheared")
+write_case(sheared, A)
+hc.run("blockMesh", sheared, "log.blockMesh")
+hc.run("demPimpleFoam", sheared, "log.init")
+for t in os.listdir(sheared):
+    if re.fullmatch(r"[0-9.e-]+", t) and t != "0":
+        shutil.rmtree(os.path.join(sheared, t))
+shutil.rmtree(os.path.join(sheared, "postProcessing"), ignore_errors=True)
+place(os.path.join(sheared, "0/polyDEM/state"), A)
+hc.run("demPimpleFoam", sheared, "log.demPimpleFoam")
 
 tdir = f"{dt:g}"
 alpha = read_internal(os.path.join(case, tdir, "voidfraction"))
@@ -476,4 +520,35 @@ ok = dev <= 1e-12 and bool(straddle)
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: (c) 2 ranks vs serial (rock across the processor boundary:"
       f" {bool(straddle)}): max |alpha_par - alpha_ser| = {dev:.3g} (<= 1e-12)")
+# (d) sheared mesh: parallelepiped cells. Reference: V(P n A B) =
+# det(A) V(A^-1 P n B), B the cell's box in the unsheared mesh
+Ainv, detA = inverse(A)
+alpha_d = read_internal(os.path.join(sheared, tdir, "voidfraction"))
+Vc_d = detA * Vc
+solid_d = [(1 - x) * Vc_d for x in alpha_d]
+log = open(os.path.join(sheared, "log.demPimpleFoam")).read()
+comp = [float(x) for x in re.findall(r"completed in the centre cells by at most (\S+)", log)]
+ok = bool(comp) and max(comp) <= 1e-10
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: (d) sheared cells: max |1 - sum of weights| (cube, rock, 2 spheres) ="
+      f" {max(comp) if comp else float('nan'):.3g} (<= 1e-10 = sphereTolerance: the spheres' oblique"
+      f" sections)")
+faces_d = read_vtp_polyhedra(os.path.join(sheared, tdir, "polyDEM/polyhedra.vtp"))
+err_d, nd = 0.0, 0
+for name, c0 in (("cube", cube_c), ("rock", rock_c)):
+    cw = amap(A, c0)
+    pf = [f for f in faces_d if all(math.dist(p, cw) < 0.015 for p in f)]
+    Vp = volume(pf)
+    pf_unsheared = [[amap(Ainv, p) for p in f] for f in pf]
+    for c in range(len(alpha_d)):
+        lo, hi = cell_box(c)
+        if abs(0.5 * (lo[0] + hi[0]) - c0[0]) > 0.02:
+            continue
+        ref = detA * box_clip_volume(pf_unsheared, lo, hi, 1e-15)
+        nd += ref > 0
+        err_d = max(err_d, abs(solid_d[c] - ref) / Vp)
+ok = err_d <= 1e-10 and nd >= 12
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: (d) sheared cells: cube and rock per cell ({nd} cells) vs python"
+      f" clipping reference: max |error|/V_p = {err_d:.3g} (<= 1e-10)")
 hc.finish(results)
