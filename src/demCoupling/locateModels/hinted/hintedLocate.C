@@ -19,7 +19,13 @@ Foam::hintedLocate::hintedLocate
     facePlanesExact_(),
     localBounds_(),
     meshEventIndex_(-1)
-{}
+{
+    // The octree fall-back's tet base points and cell tree are built with
+    // collective operations: build them here, on every processor, and not
+    // at a first use that only some processors reach (a parallel deadlock)
+    (void)mesh_.tetBasePtIs();
+    (void)mesh_.cellTree();
+}
 
 
 void Foam::hintedLocate::update() const
@@ -35,6 +41,10 @@ void Foam::hintedLocate::update() const
         return;
     }
     meshEventIndex_ = event;
+    // Collective, see the constructor; every processor comes here at the
+    // first search after a mesh change
+    (void)mesh_.tetBasePtIs();
+    (void)mesh_.cellTree();
 
     const pointField& pts = mesh_.points();
     const faceList& faces = mesh_.faces();
