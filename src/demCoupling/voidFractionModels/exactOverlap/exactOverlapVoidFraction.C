@@ -512,6 +512,23 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
             << " face planes" << exit(FatalError);
     }
 
+    // A separating plane of the cell; the sphere inside the cell
+    bool sphereInside = true;
+    for (int j = 0; j < ncp; ++j)
+    {
+        const double sd = polydem::dot(cn[j], toP(c)) - cd[j];
+        if (sd >= r)
+        {
+            return 0;
+        }
+        sphereInside = sphereInside && sd <= -r;
+    }
+    const scalar Vs = 4.0/3.0*constant::mathematical::pi*pow3(r);
+    if (sphereInside)
+    {
+        return Vs;
+    }
+
     // Whole cell inside the sphere
     bool allIn = true;
     for (const label p : cPoints)
@@ -527,7 +544,6 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
         return mesh_.V()[celli];
     }
 
-    const scalar Vs = 4.0/3.0*constant::mathematical::pi*pow3(r);
     const scalar za = max(c.z() - r, cellBb.min().z());
     const scalar zb = min(c.z() + r, cellBb.max().z());
     if (!(zb > za))
