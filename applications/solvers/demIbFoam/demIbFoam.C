@@ -28,9 +28,12 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "dynamicFvMesh.H"
 #include "pimpleControl.H"
+#include "CorrectPhi.H"
 #include "directForcingIB.H"
 #include "ibParticles.H"
+#include "ibRefinementIndicator.H"
 
 int main(int argc, char *argv[])
 {
@@ -44,9 +47,10 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
-    #include "createMesh.H"
-    #include "createControl.H"
+    #include "createDynamicFvMesh.H"
+    #include "createDyMControls.H"
     #include "createFields.H"
+    #include "createUfIfPresent.H"
 
     scalar cumulativeContErr = 0;
 
@@ -59,6 +63,14 @@ int main(int argc, char *argv[])
     );
     ib.update(particles.bodies());
 
+    // Dynamic refinement around the bodies (constant/dynamicMeshDict with
+    // dynamicRefineFvMesh and field ibRefinement); nothing when static
+    autoPtr<ibRefinementIndicator> refinement;
+    if (mesh.dynamic())
+    {
+        refinement.reset(new ibRefinementIndicator(mesh, particles.dict()));
+    }
+
     Info<< "Resolved particles: " << particles.bodies().size()
         << ", solid volume on the mesh " << ib.solidVolume() << nl << endl;
 
@@ -66,11 +78,41 @@ int main(int argc, char *argv[])
 
     while (runTime.run())
     {
+        #include "readDyMControls.H"
         #include "CourantNo.H"
 
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        if (refinement)
+        {
+            // Refine where the bodies are now, unrefine where they were;
+            // the fields are mapped, the flux made conservative again and
+            // the solid mask rebuilt on the new cells
+            refinement->update(particles.bodies());
+            mesh.update();
+            if (mesh.changing())
+            {
+                if (correctPhi)
+                {
+                    phi = mesh.Sf() & Uf();
+                    CorrectPhi
+                    (
+                        U,
+                        phi,
+                        p,
+                        dimensionedScalar("rAUf", dimTime, 1),
+                        geometricZeroField(),
+                        pimple
+                    );
+                    #include "continuityErrs.H"
+                }
+                ib.update(particles.bodies());
+                Info<< "Mesh: " << returnReduce(mesh.nCells(), sumOp<label>())
+                    << " cells" << endl;
+            }
+        }
 
         while (pimple.loop())
         {
@@ -84,6 +126,7 @@ int main(int argc, char *argv[])
 
         // Immersed boundary: bodies at the start of the step
         ib.correct(U, p, phi, rhoFluid.value(), particles.bodies());
+        fvc::correctUf(Uf, U, phi);
 
         // Fluid momentum inside the bodies at the end of the step
         // (internal-fluid inertia, ibParticles: internalFluid integrated)

@@ -91,9 +91,18 @@ Foam::directForcingIB::directForcingIB
             << "nSubSamples must be >= 1, not " << nSub_ << exit(FatalIOError);
     }
     mesh_.setFluxRequired(phiIB_.name());
+    updateCellBoxes();
+}
 
+
+void Foam::directForcingIB::updateCellBoxes()
+{
     const pointField& pts = mesh_.points();
     const labelListList& cp = mesh_.cellPoints();
+    cellMin_.setSize(mesh_.nCells());
+    cellMax_.setSize(mesh_.nCells());
+    cellHalfDiag_.setSize(mesh_.nCells());
+    cellBody_.setSize(mesh_.nCells());
     forAll(cp, celli)
     {
         point lo(GREAT, GREAT, GREAT), hi(-GREAT, -GREAT, -GREAT);
@@ -162,6 +171,12 @@ Foam::scalar Foam::directForcingIB::cellFraction
 
 void Foam::directForcingIB::update(const UList<ibBody>& bodies)
 {
+    // Refined or moved mesh (dynamicFvMesh): new cells, new boxes
+    if (cellMin_.size() != mesh_.nCells() || mesh_.changing())
+    {
+        updateCellBoxes();
+    }
+
     scalarField& lam = lambda_.primitiveFieldRef();
     vectorField& us = Us_.primitiveFieldRef();
     lam = 0;
