@@ -1,0 +1,262 @@
+#!/usr/bin/env python3
+"""Make one case of the polyhedral settling study from template/.
+
+Usage: makeCase.py NAME [-n N] [-full] [-endTime T] [-tilt DEG]
+  NAME       A<AR>C<C><H|V>  e.g. A1.25C20H (aspect ratio 1.25, 20 facets,
+             horizontal release), A2.0C50V (vertical release), or
+             ellipsoid (the verification particle, see README.md)
+  -n N       cells per equivalent diameter (default 5; ellipsoid 5)
+  -full      the published set-up: polyhedra d/dx = 12.5 (dx = 0.8 mm) in a
+             0.1 x 0.1 x 0.32 m box released at z = 0.28 m; ellipsoid
+             dx = 0.6 mm in the 0.07 x 0.07 x 0.3 m box
+  -endTime T [s] (default: reduced 0.45 s polyhedra, 2 s ellipsoid;
+             full 0.6 s polyhedra, 5 s ellipsoid)
+  -height H  domain height [m] (release 0.02 m below the top; default
+             reduced 0.22 m polyhedra, 0.12 m ellipsoid)
+  -dir D     case folder (default cases/NAME)
+  -tilt DEG  vertical release: initial angle of the long axis from the
+             vertical (default 2; 0 = exactly vertical); horizontal: from
+             the horizontal (default 0)
+
+Writes the case folder (cases/NAME/): 0.orig, constant (ibProperties from template/,
+transportProperties, demProperties, triSurface/shape.stl from polyhedronGen),
+system (fvSchemes, fvSolution from template/, blockMeshDict, controlDict) and
+the DEM's initial state 0/polyDEM/state: demFoam is run once with endTime 0
+to write the state of a one-particle insertion, whose position and
+orientation are then set here (long axis = body x, the axis of least moment:
+along world x for H, along world z, tilted by -tilt about y, for V).
+The DEM (demIbFoam, motion polyDEM) then starts from that state.
+"""
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+rhoF, muF = 1000.0, 1e-3           # water
+
+args = sys.argv[1:]
+if not args or args[0].startswith("-"):
+    sys.exit(__doc__)
+name = args[0]
+
+
+def option(flag, default, conv=float):
+    if flag in args:
+        return conv(args[args.index(flag) + 1])
+    return default
+
+
+full = "-full" in args
+ellipsoid = name == "ellipsoid"
+if ellipsoid:
+    R, AR, rhoP = 3.5e-3, 1.30, 1031.0
+    # three overlapping spheres of radius R on the x axis: their convex hull
+    # is a capsule (cylinder of length 2s between hemispheres),
+    # L / W = (2R + 2s) / 2R = AR
+    s = (AR - 1.0) * R
+    d = 2 * (3.0 / (4 * math.pi) * (4.0 / 3 * math.pi * R**3 + math.pi * R**2 * 2 * s)) ** (1 / 3.0)
+    horizontal = True
+    if full:
+        L, H, z0, dx, tEnd, uRef = 0.07, 0.30, 0.27, 0.6e-3, 5.0, 0.06
+    else:
+        N = option("-n", 5.0)
+        L, H, z0, dx, tEnd, uRef = 0.05, 0.12, 0.10, d / N, 2.0, 0.06
+    writeEvery = 0.02
+    tilt = 0.0
+else:
+    m = re.fullmatch(r"A([0-9.]+)C([0-9]+)([HV])", name)
+    if not m:
+        sys.exit("makeCase.py: NAME must be A<AR>C<C><H|V> or ellipsoid, got '%s'" % name)
+    AR, C, horizontal = float(m.group(1)), int(m.group(2)), m.group(3) == "H"
+    d, rhoP = 0.010, 2650.0
+    if full:
+        L, H, z0, dx, tEnd, uRef = 0.10, 0.32, 0.28, 0.8e-3, 0.6, 0.8
+    else:
+        N = option("-n", 5.0)
+        L, H, z0, dx, tEnd, uRef = 0.04, 0.22, 0.20, d / N, 0.45, 0.5
+    writeEvery = 0.004
+    tilt = 0.0 if horizontal else 2.0
+tEnd = option("-endTime", tEnd)
+if "-height" in args:
+    H = option("-height", H)
+    z0 = H - 0.02
+tilt = option("-tilt", tilt)
+
+nxy, nz = int(round(L / dx)), int(round(H / dx))
+dx = L / nxy
+H = nz * dx
+# deltaT: Courant number 0.3 at uRef (about the largest settling velocity),
+# rounded down to a whole number of 1e-4 s (and of DEM steps)
+dtDEM = 1e-5
+dt = max(1e-4, math.floor(0.3 * dx / uRef / 1e-4 + 1e-9) * 1e-4)
+if dt > 2e-3:
+    dt = math.floor(0.3 * dx / uRef / 1e-3 + 1e-9) * 1e-3
+nWrite = max(1, int(round(writeEvery / dt)))
+
+case = os.path.abspath(option("-dir", os.path.join(here, "cases", name), str))
+if os.path.exists(case):
+    shutil.rmtree(case)
+shutil.copytree(os.path.join(here, "template"), case)
+os.makedirs(os.path.join(case, "constant", "triSurface"))
+stl = os.path.join(case, "constant", "triSurface", "shape.stl")
+
+# ---- shape ---------------------------------------------------------------
+if ellipsoid:
+    # 34 points on the capsule (Fibonacci spiral in its arc length from tip
+    # to tip): every one a hull vertex, 2 x 34 - 4 = 64 triangular facets,
+    # the engine's limit
+    n = 34
+    arc = 2 * s + math.pi * R
+    pts = []
+    golden = math.pi * (3 - math.sqrt(5))
+    for i in range(n):
+        a = (i + 0.5) / n * arc
+        if a < math.pi * R / 2:                  # first cap
+            th = a / R
+            x, r = -s - R * math.cos(th), R * math.sin(th)
+        elif a > 2 * s + math.pi * R / 2:        # second cap
+            th = (arc - a) / R
+            x, r = s + R * math.cos(th), R * math.sin(th)
+        else:                                    # cylinder
+            x, r = -s + (a - math.pi * R / 2), R
+        phi = i * golden
+        pts.append((x, r * math.cos(phi), r * math.sin(phi)))
+    obj = os.path.join(case, "constant", "triSurface", "points.obj")
+    with open(obj, "w") as f:
+        f.write("# convex hull of three spheres R = %g m, centres at x = -%g, 0, %g m\n"
+                % (R, s, s))
+        for p in pts:
+            f.write("v %.9e %.9e %.9e\n" % p)
+    # rescaled to the volume of the three spheres' hull (the capsule)
+    gen = ["polyhedronGen", "-shape", "hull", "-input", obj, "-d", repr(d), "-o", stl,
+           "-properties"]
+    shapeNote = "ellipsoid-like: convex hull of three spheres R = %g mm, AR %g" % (1e3 * R, AR)
+else:
+    gen = ["polyhedronGen", "-shape", "settling", "-d", repr(d), "-AR", repr(AR),
+           "-C", str(C), "-o", stl, "-properties"]
+    shapeNote = "settling particle AR %g, C %d facets, d_eq %g mm" % (AR, C, 1e3 * d)
+out = subprocess.run(gen, capture_output=True, text=True)
+if out.returncode:
+    sys.exit("polyhedronGen failed:\n" + out.stdout + out.stderr)
+with open(os.path.join(case, "shape.log"), "w") as f:
+    f.write(" ".join(gen) + "\n" + out.stdout)
+props = dict(re.findall(r"^(\w+)\s+(\S+)", out.stdout, re.M))
+dEq = float(props["equivalentDiameter"])
+vol = float(props["volume"])
+
+# ---- dictionaries --------------------------------------------------------
+with open(os.path.join(case, "constant", "transportProperties"), "w") as f:
+    f.write("""FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
+// water: rho_f = %g kg/m3, mu_f = %g Pa s
+nu  %.6e;
+rho %g;
+""" % (rhoF, muF, muF / rhoF, rhoF))
+
+with open(os.path.join(case, "system", "blockMeshDict"), "w") as f:
+    f.write("""FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
+// generated by makeCase.py: d/dx = %.3g (dx = %.4g mm)
+vertices ((0 0 0) (%g 0 0) (%g %g 0) (0 %g 0) (0 0 %g) (%g 0 %g) (%g %g %g) (0 %g %g));
+blocks ( hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (1 1 1) );
+boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );
+""" % (dEq / dx, 1e3 * dx, L, L, L, L, H, L, H, L, L, H, L, H, nxy, nxy, nz))
+
+demProps = """FoamFile { version 2.0; format ascii; class dictionary; object demProperties; }
+// %s, rho_p = %g kg/m3.
+// The initial position and orientation are set by makeCase.py in
+// 0/polyDEM/state (the insertion below only makes that state once).
+// Contact only at the bottom (not studied): soft, so that the DEM step is
+// 1e-5 s (the published E = 0.1 GPa needs 1e-7 s); friction 0.2 and
+// restitution 0.3 as published.
+device          cpu;
+timeStep        %g;
+gravity         (0 0 -9.81);
+contactModel    { law overlapVolume; volumetricStiffness 3e8; tangentialStiffnessRatio 0.2857; }
+materials       { solid { youngsModulus 5e6; poissonsRatio 0.3; density %g; } }
+interactions    { default { restitution 0.3; friction 0.2; } }
+particleTypes   { particle { shape polyhedron; material solid; geometry { type stl; file "shape.stl"; } } }
+walls
+{
+    bottom { type plane; point (0 0 0); normal (0 0 1); material solid; }
+}
+insertion
+{
+    one
+    {
+        type randomFill; particleType particle; number 1; seed 1;
+        region { type box; min (0 0 0); max (%g %g %g); }
+    }
+}
+output { format ascii; vtk true; }
+""" % (shapeNote, rhoP, dtDEM, rhoP, L, L, H)
+with open(os.path.join(case, "constant", "demProperties"), "w") as f:
+    f.write(demProps)
+
+
+def controlDict(endTime, app):
+    with open(os.path.join(case, "system", "controlDict"), "w") as f:
+        f.write("""FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+// generated by makeCase.py %s
+application %s;
+startFrom startTime; startTime 0; stopAt endTime; endTime %g;
+deltaT %g;
+// frequent writes: the DEM state (angular velocity, orientation) is written
+// with the fields; Allrun deletes the fields after the post-processing
+writeControl timeStep; writeInterval %d;
+writeFormat binary; writePrecision 12; timeFormat general; timePrecision 6;
+runTimeModifiable false;
+""" % (" ".join(sys.argv[1:]), app, endTime, dt, nWrite))
+
+
+# ---- initial DEM state ---------------------------------------------------
+controlDict(0, "demFoam")
+env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
+out = subprocess.run(["demFoam", "-case", case], capture_output=True, text=True, env=env)
+with open(os.path.join(case, "log.init"), "w") as f:
+    f.write(out.stdout + out.stderr)
+statePath = os.path.join(case, "0", "polyDEM", "state")
+if out.returncode or not os.path.isfile(statePath):
+    sys.exit("demFoam (initial state) failed: see %s/log.init" % case)
+shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
+for pvd in ("particles.pvd", "walls.pvd", "polyhedra.pvd"):
+    if os.path.exists(os.path.join(case, pvd)):
+        os.remove(os.path.join(case, pvd))
+
+if horizontal:
+    a = math.radians(tilt)            # long axis (body x) along world x
+else:
+    a = math.radians(90.0 - tilt)     # long axis tilt degrees from world z
+# rotation by a about world y: body x -> (cos a, 0, -sin a)
+q = (math.cos(a / 2), 0.0, math.sin(a / 2), 0.0)
+pos = (L / 2, L / 2, z0)
+lines = open(statePath).read().split("\n")
+i = lines.index("data") + 1
+w = lines[i].split()
+# id type radius mass I(3) position(3) q(w x y z) U(3) omega(3) F(3) T(3) refPosition(3)
+w[7:10] = ["%.17g" % v for v in pos]
+w[10:14] = ["%.17g" % v for v in q]
+w[14:20] = ["0"] * 6
+w[26:29] = ["%.17g" % v for v in pos]
+lines[i] = " " + " ".join(w)
+with open(statePath, "w") as f:
+    f.write("\n".join(lines))
+for vtp in ("particles.vtp", "polyhedra.vtp"):
+    p = os.path.join(case, "0", "polyDEM", vtp)
+    if os.path.exists(p):
+        os.remove(p)        # written for the random orientation: out of date
+
+controlDict(tEnd, "demIbFoam")
+mP = rhoP * vol
+with open(os.path.join(case, "caseInfo"), "w") as f:
+    f.write("name %s\nAR %g\nfacets %s\nrelease %s\ntilt %g\nrhoP %g\nrhoF %g\nmuF %g\n"
+            "dEq %.9g\nvolume %.9g\nmass %.9g\nnetWeight %.9g\nL %g\nH %g\nz0 %g\n"
+            "dx %.9g\ndOverDx %.4g\ncells %d\ndeltaT %g\nendTime %g\nfull %d\n"
+            % (name, AR, "-" if ellipsoid else C, "H" if horizontal else "V", tilt,
+               rhoP, rhoF, muF, dEq, vol, mP, (rhoP - rhoF) * vol * 9.81, L, H, z0,
+               dx, dEq / dx, nxy * nxy * nz, dt, tEnd, full))
+print("%s: %s; mesh %d x %d x %d = %d cells, d/dx %.2f (dx %.3g mm); deltaT %g "
+      "(Co 0.3 at %g m/s), endTime %g, release at z = %g m %s (tilt %g deg)"
+      % (name, shapeNote, nxy, nxy, nz, nxy * nxy * nz, dEq / dx, 1e3 * dx, dt, uRef,
+         tEnd, z0, "horizontal" if horizontal else "vertical", tilt))

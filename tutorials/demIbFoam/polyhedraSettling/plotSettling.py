@@ -1,0 +1,288 @@
+#!/usr/bin/env python3
+"""Post-processing of the polyhedral settling study.
+
+Usage: plotSettling.py CASE...          one line per case, series and plot
+       plotSettling.py --table CASE...  also postProcessing/table.dat, the
+                                        comparison plot and README.md's table
+
+Per case (cases/CASE):
+  reads postProcessing/ibForces/0/forces.dat (demIbFoam: every fluid step,
+  position, velocity, IB fluid force F and torque T) and <time>/polyDEM/state
+  (the DEM state at each write time: angular velocity, orientation);
+  writes postProcessing/settling/settling.dat
+      t z w |U_h| Fx Fy Fz          (every fluid step; w < 0 downwards)
+  and postProcessing/settling/rotation.dat
+      t omega_x omega_y omega_z |omega| tilt    (every write time; tilt =
+      angle of the long axis, body x, above the horizontal [deg])
+  and settling.png (gnuplot): settling velocity, fluid force, angular
+  velocity and tilt against time.
+
+Terminal velocity: the mean settling velocity over the plateau window, the
+last `plateau` seconds (0.06 s polyhedra, 0.5 s ellipsoid) before the
+particle comes within 2 d_eq of the bottom (or the end of the run); the
+drift over the window (linear fit, change across the window / mean) tells
+whether it is a plateau. Maximum velocity: the largest instantaneous
+settling velocity before that point, and the largest average over one cell
+crossing (dx/w; the coarse-mesh velocity oscillates as cells switch in and
+out of the body).
+"""
+import glob
+import math
+import os
+import re
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+
+def readInfo(case):
+    info = {}
+    for line in open(os.path.join(case, "caseInfo")):
+        k, v = line.split(None, 1)
+        v = v.strip()
+        try:
+            info[k] = float(v)
+        except ValueError:
+            info[k] = v
+    return info
+
+
+def cdHolzerSommerfeld(Re, phi, phiP):
+    """Drag coefficient of a non-spherical particle (Holzer & Sommerfeld 2008,
+    Powder Technol. 184:361), on the volume-equivalent sphere's diameter and
+    cross-section; phi sphericity, phiP crosswise sphericity (for the flow
+    direction)."""
+    return (8 / Re / math.sqrt(phiP) + 16 / Re / math.sqrt(phi) + 3 / math.sqrt(Re) / phi**0.75
+            + 0.42 * 10**(0.4 * (-math.log10(phi))**0.2) / phiP)
+
+
+def terminalHS(info, case):
+    """Terminal velocity from Holzer-Sommerfeld in an unbounded fluid, the
+    particle falling along body z (H: broadside, as released) or body x (V)"""
+    log = open(os.path.join(case, "shape.log")).read()
+    phi = float(re.search(r"^sphericity\s+(\S+)", log, re.M).group(1))
+    psi = [float(x) for x in re.search(r"^crosswiseSphericity\s+(\S+) (\S+) (\S+)", log,
+                                       re.M).groups()]
+    phiP = psi[2] if info["release"] == "H" else psi[0]
+    d, rp, rf, mu = info["dEq"], info["rhoP"], info["rhoF"], info["muF"]
+    v = 0.1
+    for _ in range(300):
+        Re = rf * v * d / mu
+        v = math.sqrt(4.0 / 3 * 9.81 * d * abs(rp - rf) / rf / cdHolzerSommerfeld(Re, phi, phiP))
+    return v
+
+
+def tiltDeg(q):
+    w, x, y, z = q
+    ez = 2 * (x * z - w * y)          # world z component of R(q) e_x
+    return math.degrees(math.asin(max(-1.0, min(1.0, ez))))
+
+
+def analyse(name):
+    case = os.path.join(here, "cases", name)
+    info = readInfo(case)
+    files = sorted(glob.glob(os.path.join(case, "postProcessing", "ibForces", "*", "forces.dat")))
+    if not files:
+        return None
+    rows = {}
+    for fn in files:
+        for line in open(fn):
+            if line.startswith("#") or not line.strip():
+                continue
+            v = [float(x) for x in line.split()]
+            rows[v[0]] = v
+    t = sorted(rows)
+    z = [rows[x][4] for x in t]
+    w = [rows[x][7] for x in t]
+    uh = [math.hypot(rows[x][5], rows[x][6]) for x in t]
+    F = [rows[x][8:11] for x in t]
+
+    rot = []
+    for sd in glob.glob(os.path.join(case, "*", "polyDEM", "state")):
+        try:
+            tt = float(sd.split(os.sep)[-3])
+        except ValueError:
+            continue
+        lines = open(sd).read().split("\n")
+        p = lines[lines.index("data") + 1].split()
+        q = [float(x) for x in p[10:14]]
+        om = [float(x) for x in p[17:20]]
+        rot.append((tt, om, math.sqrt(sum(o * o for o in om)), tiltDeg(q)))
+    rot.sort()
+
+    out = os.path.join(case, "postProcessing", "settling")
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "settling.dat"), "w") as f:
+        f.write("# %s: t [s], z [m], w [m/s] (settling velocity, < 0 down), |U_h| [m/s],"
+                " IB fluid force Fx Fy Fz [N]\n" % name)
+        for i in range(len(t)):
+            f.write("%g %.6e %.6e %.6e %.6e %.6e %.6e\n"
+                    % (t[i], z[i], w[i], uh[i], F[i][0], F[i][1], F[i][2]))
+    with open(os.path.join(out, "rotation.dat"), "w") as f:
+        f.write("# %s: t [s], omega_x omega_y omega_z |omega| [1/s], tilt of the long"
+                " axis above the horizontal [deg]\n" % name)
+        for tt, om, mag, tl in rot:
+            f.write("%g %.6e %.6e %.6e %.6e %.4f\n" % (tt, om[0], om[1], om[2], mag, tl))
+
+    d, dx = info["dEq"], info["dx"]
+    ell = info["name"] == "ellipsoid"
+    plateau = 0.5 if ell else 0.06
+    # end of the useful record: 2 d above the bottom
+    iEnd = len(t)
+    for i in range(len(t)):
+        if z[i] < 2 * d:
+            iEnd = i
+            break
+    tE = t[iEnd - 1]
+    win = [i for i in range(iEnd) if t[i] >= tE - plateau]
+    wT = -sum(w[i] for i in win) / len(win)
+    # drift: least-squares slope over the window
+    tm = sum(t[i] for i in win) / len(win)
+    sxx = sum((t[i] - tm) ** 2 for i in win)
+    slope = -sum((t[i] - tm) * (w[i] + wT) for i in win) / sxx if sxx else 0.0
+    drift = slope * plateau / wT if wT else 0.0
+    wMaxI = max(range(iEnd), key=lambda i: -w[i])
+    wMax = -w[wMaxI]
+    cross = dx / max(wT, 1e-9)
+    avg = []
+    for i in range(iEnd):
+        v = [w[j] for j in range(iEnd) if abs(t[j] - t[i]) <= 0.5 * cross + 1e-12]
+        avg.append(-sum(v) / len(v))
+    wMaxS = max(avg)
+    tMaxS = t[avg.index(wMaxS)]
+    tiltMax = max((abs(r[3]) for r in rot if r[0] <= tE), default=float("nan"))
+    tiltEnd = min((r for r in rot if r[0] <= tE), key=lambda r: abs(r[0] - tE),
+                  default=(0, 0, 0, float("nan")))[3]
+    omMax = max((r[2] for r in rot if r[0] <= tE), default=float("nan"))
+    Fnet = info["netWeight"]
+    Fz = sum(F[i][2] for i in win) / len(win)
+    wall = float("nan")
+    rtf = os.path.join(case, "runTime")
+    if os.path.exists(rtf):
+        wall = float(open(rtf).read().split()[0])
+    cpu = float("nan")
+    logf = os.path.join(case, "log.demIbFoam")
+    if os.path.exists(logf):
+        m = re.findall(r"ExecutionTime = (\S+) s", open(logf).read())
+        if m:
+            cpu = float(m[-1])
+    wHS = terminalHS(info, case)
+    res = dict(name=name, info=info, wT=wT, wHS=wHS, drift=drift, win=(t[win[0]], tE), wMax=wMax,
+               tMax=t[wMaxI], wMaxS=wMaxS, tMaxS=tMaxS, tiltMax=tiltMax, tiltEnd=tiltEnd,
+               omMax=omMax, FzOverW=Fz / Fnet, tLast=t[-1], cpu=cpu, wall=wall,
+               reachedBottom=iEnd < len(t))
+    print("%s: d/dx %.2f, %d cells, dt %g, t = 0 ... %g s; terminal w %.4f m/s (mean over"
+          " t = %.3f ... %.3f s, drift %+.1f %% over the window), F_z/(net weight) %.3f;"
+          " max w %.4f m/s at %.3f s (cell-crossing average %.4f at %.3f s); max |omega|"
+          " %.2f 1/s, max |tilt| %.1f deg, tilt at the end %.1f deg; CPU %.0f s, wall %.0f s"
+          % (name, info["dOverDx"], info["cells"], info["deltaT"], t[-1], wT, t[win[0]],
+             tE, 100 * drift, Fz / Fnet, wMax, t[wMaxI], wMaxS, tMaxS, omMax, tiltMax,
+             tiltEnd, cpu, wall))
+    print("  Holzer-Sommerfeld (2008) terminal velocity, unbounded, falling %s: %.4f m/s;"
+          " measured / that = %.3f" % ("broadside" if info["release"] == "H" else "along the"
+                                       " long axis", wHS, wT / wHS))
+    plot(case, name, info, Fnet)
+    return res
+
+
+def gnuplot(script, cwd):
+    try:
+        subprocess.run(["gnuplot"], input=script, text=True, check=True, cwd=cwd,
+                       capture_output=True)
+        return True
+    except (OSError, subprocess.CalledProcessError) as e:
+        print("gnuplot failed (%s): no PNG" % e)
+        return False
+
+
+def plot(case, name, info, Fnet):
+    script = """set terminal pngcairo size 1000,700 noenhanced
+set output 'settling.png'
+set multiplot layout 2,2 title '%s (d/dx %.1f)'
+set xlabel 't [s]'
+set key bottom right
+set ylabel 'velocity [m/s]'
+plot 'postProcessing/settling/settling.dat' u 1:(-$3) w l lw 2 t 'settling -w', \
+     '' u 1:4 w l t 'horizontal |U_h|'
+set ylabel 'IB fluid force [N]'
+plot 'postProcessing/settling/settling.dat' u 1:7 w l lw 2 t 'F_z', \
+     '' u 1:(sqrt($5**2+$6**2)) w l t '|F_h|', \
+     %g w l dt 2 lc rgb 'black' t '(rho_p - rho_f) V g'
+set ylabel 'angular velocity [1/s]'
+set key top left
+plot 'postProcessing/settling/rotation.dat' u 1:5 w lp pt 7 ps 0.4 lw 2 t '|omega|', \
+     '' u 1:2 w l t 'omega_x', '' u 1:3 w l t 'omega_y', '' u 1:4 w l t 'omega_z'
+set ylabel 'long axis above horizontal [deg]'
+plot 'postProcessing/settling/rotation.dat' u 1:6 w lp pt 7 ps 0.4 lw 2 notitle
+unset multiplot
+""" % (name, info["dOverDx"], Fnet)
+    gnuplot(script, case)
+
+
+def table(results):
+    os.makedirs(os.path.join(here, "postProcessing"), exist_ok=True)
+    head = ("case AR C release d/dx cells deltaT endTime wTerminal plateauFrom plateauTo"
+            " drift wHolzerSommerfeld wMax tMax wMaxCellAvg maxOmega maxTilt tiltEnd FzOverNetWeight cpu_s wall_s")
+    with open(os.path.join(here, "postProcessing", "table.dat"), "w") as f:
+        f.write("# " + head + "\n")
+        for r in results:
+            i = r["info"]
+            f.write("%s %g %s %s %.3g %d %g %g %.5f %.4f %.4f %.4f %.5f %.5f %.4f %.5f %.3f %.2f"
+                    " %.2f %.4f %.0f %.0f\n"
+                    % (r["name"], i["AR"], i["facets"], i["release"], i["dOverDx"],
+                       i["cells"], i["deltaT"], r["tLast"], r["wT"], r["win"][0], r["win"][1],
+                       r["drift"], r["wHS"], r["wMax"], r["tMax"], r["wMaxS"], r["omMax"],
+                       r["tiltMax"], r["tiltEnd"], r["FzOverW"], r["cpu"], r["wall"]))
+    md = ["| case | AR | C | release | d/dx | cells | dt [s] | t_end [s] | terminal w [m/s] "
+          "(plateau window, drift) | Hölzer–Sommerfeld w [m/s] | max w [m/s] (t) | max w, cell-avg. | w_max / w_term | "
+          "max tilt [deg] | F_z / net weight (plateau) | CPU / wall [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        i = r["info"]
+        md.append("| %s | %g | %s | %s | %.3g | %d | %g | %g | %.4f (%.2f–%.2f s, %+.1f %%) | %.3f |"
+                  " %.4f (%.3f s) | %.4f | %.2f | %.1f | %.3f | %.0f / %.0f |"
+                  % (r["name"], i["AR"], i["facets"], i["release"], i["dOverDx"], i["cells"],
+                     i["deltaT"], r["tLast"], r["wT"], r["win"][0], r["win"][1],
+                     100 * r["drift"], r["wHS"], r["wMax"], r["tMax"], r["wMaxS"], r["wMax"] / r["wT"],
+                     r["tiltMax"], r["FzOverW"], r["cpu"], r["wall"]))
+    text = "\n".join(md)
+    print(text)
+    readme = os.path.join(here, "README.md")
+    if os.path.exists(readme):
+        s = open(readme).read()
+        a, b = "<!-- table: plotSettling.py --table -->", "<!-- end of table -->"
+        if a in s and b in s:
+            s = s[:s.index(a) + len(a)] + "\n" + text + "\n" + s[s.index(b):]
+            open(readme, "w").write(s)
+            print("updated the table in README.md")
+    # comparison plot
+    curves = ", ".join("'cases/%s/postProcessing/settling/settling.dat' u 1:(-$3) w l lw 2 t '%s'"
+                       % (r["name"], r["name"]) for r in results)
+    if curves:
+        gnuplot("""set terminal pngcairo size 800,500 noenhanced
+set output 'postProcessing/settling.png'
+set xlabel 't [s]'
+set ylabel 'settling velocity -w [m/s]'
+set key bottom right
+plot %s
+""" % curves, here)
+
+
+def main():
+    args = sys.argv[1:]
+    doTable = "--table" in args
+    names = [a for a in args if not a.startswith("--")]
+    results = []
+    for n in names:
+        r = analyse(n)
+        if r is None:
+            print("%s: no forces.dat (not run?)" % n)
+        else:
+            results.append(r)
+    if doTable:
+        table(results)
+
+
+if __name__ == "__main__":
+    main()
