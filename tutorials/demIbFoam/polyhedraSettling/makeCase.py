@@ -105,34 +105,62 @@ stl = os.path.join(case, "constant", "triSurface", "shape.stl")
 
 # ---- shape ---------------------------------------------------------------
 if ellipsoid:
-    # 34 points on the capsule (Fibonacci spiral in its arc length from tip
+    # 34 points on a capsule (Fibonacci spiral in its arc length from tip
     # to tip): every one a hull vertex, 2 x 34 - 4 = 64 triangular facets,
-    # the engine's limit
+    # the engine's limit. With 34 points the hull is narrower than the
+    # capsule, so the capsule's half-length s2 is chosen (bisection) so that
+    # the hull's L / mean(W1, W2) along its principal axes (the measure of
+    # polyhedronGen -AR) is AR; the hull is scaled to the volume of the
+    # three spheres' hull.
     n = 34
-    arc = 2 * s + math.pi * R
-    pts = []
     golden = math.pi * (3 - math.sqrt(5))
-    for i in range(n):
-        a = (i + 0.5) / n * arc
-        if a < math.pi * R / 2:                  # first cap
-            th = a / R
-            x, r = -s - R * math.cos(th), R * math.sin(th)
-        elif a > 2 * s + math.pi * R / 2:        # second cap
-            th = (arc - a) / R
-            x, r = s + R * math.cos(th), R * math.sin(th)
-        else:                                    # cylinder
-            x, r = -s + (a - math.pi * R / 2), R
-        phi = i * golden
-        pts.append((x, r * math.cos(phi), r * math.sin(phi)))
+
+    def capsule(s2):
+        arc = 2 * s2 + math.pi * R
+        pts = []
+        for i in range(n):
+            a = (i + 0.5) / n * arc
+            if a < math.pi * R / 2:                  # first cap
+                th = a / R
+                x, r = -s2 - R * math.cos(th), R * math.sin(th)
+            elif a > 2 * s2 + math.pi * R / 2:       # second cap
+                th = (arc - a) / R
+                x, r = s2 + R * math.cos(th), R * math.sin(th)
+            else:                                    # cylinder
+                x, r = -s2 + (a - math.pi * R / 2), R
+            phi = i * golden
+            pts.append((x, r * math.cos(phi), r * math.sin(phi)))
+        return pts
+
+    def stlRatio(path):
+        # L / mean(W1, W2) along the body (principal) axes of the STL
+        v = set()
+        for line in open(path):
+            if line.strip().startswith("vertex"):
+                v.add(tuple(float(x) for x in line.split()[1:4]))
+        e = [max(p[k] for p in v) - min(p[k] for p in v) for k in range(3)]
+        return e[0] / (0.5 * (e[1] + e[2]))
+
     obj = os.path.join(case, "constant", "triSurface", "points.obj")
-    with open(obj, "w") as f:
-        f.write("# convex hull of three spheres R = %g m, centres at x = -%g, 0, %g m\n"
-                % (R, s, s))
-        for p in pts:
-            f.write("v %.9e %.9e %.9e\n" % p)
     # rescaled to the volume of the three spheres' hull (the capsule)
     gen = ["polyhedronGen", "-shape", "hull", "-input", obj, "-d", repr(d), "-o", stl,
            "-properties"]
+
+    def hull(s2):
+        with open(obj, "w") as f:
+            f.write("# convex hull of three spheres R = %g m, AR %g (see makeCase.py)\n"
+                    % (R, AR))
+            for p in capsule(s2):
+                f.write("v %.9e %.9e %.9e\n" % p)
+        if subprocess.run(gen, capture_output=True).returncode:
+            sys.exit("polyhedronGen failed: " + " ".join(gen))
+        return stlRatio(stl)
+
+    lo, hi = 0.0, 2 * s
+    for _ in range(30):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if hull(mid) < AR else (lo, mid)
+    hull(0.5 * (lo + hi))
     shapeNote = "ellipsoid-like: convex hull of three spheres R = %g mm, AR %g" % (1e3 * R, AR)
 else:
     gen = ["polyhedronGen", "-shape", "settling", "-d", repr(d), "-AR", repr(AR),

@@ -154,6 +154,8 @@ def analyse(name):
     tiltMax = max((abs(r[3]) for r in rot if r[0] <= tE), default=float("nan"))
     tiltEnd = min((r for r in rot if r[0] <= tE), key=lambda r: abs(r[0] - tE),
                   default=(0, 0, 0, float("nan")))[3]
+    tiltAtMax = min(rot, key=lambda r: abs(r[0] - t[wMaxI]),
+                    default=(0, 0, 0, float("nan")))[3]
     omMax = max((r[2] for r in rot if r[0] <= tE), default=float("nan"))
     Fnet = info["netWeight"]
     Fz = sum(F[i][2] for i in win) / len(win)
@@ -169,16 +171,16 @@ def analyse(name):
             cpu = float(m[-1])
     wHS = terminalHS(info, case)
     res = dict(name=name, info=info, wT=wT, wHS=wHS, drift=drift, win=(t[win[0]], tE), wMax=wMax,
-               tMax=t[wMaxI], wMaxS=wMaxS, tMaxS=tMaxS, tiltMax=tiltMax, tiltEnd=tiltEnd,
+               tMax=t[wMaxI], wMaxS=wMaxS, tMaxS=tMaxS, tiltAtMax=tiltAtMax, tiltMax=tiltMax, tiltEnd=tiltEnd,
                omMax=omMax, FzOverW=Fz / Fnet, tLast=t[-1], cpu=cpu, wall=wall,
                reachedBottom=iEnd < len(t))
     print("%s: d/dx %.2f, %d cells, dt %g, t = 0 ... %g s; terminal w %.4f m/s (mean over"
           " t = %.3f ... %.3f s, drift %+.1f %% over the window), F_z/(net weight) %.3f;"
           " max w %.4f m/s at %.3f s (cell-crossing average %.4f at %.3f s); max |omega|"
-          " %.2f 1/s, max |tilt| %.1f deg, tilt at the end %.1f deg; CPU %.0f s, wall %.0f s"
+          " %.2f 1/s, max |tilt| %.1f deg, |tilt| at max w %.1f deg, tilt at the end %.1f deg; CPU %.0f s, wall %.0f s"
           % (name, info["dOverDx"], info["cells"], info["deltaT"], t[-1], wT, t[win[0]],
              tE, 100 * drift, Fz / Fnet, wMax, t[wMaxI], wMaxS, tMaxS, omMax, tiltMax,
-             tiltEnd, cpu, wall))
+             abs(tiltAtMax), tiltEnd, cpu, wall))
     print("  Holzer-Sommerfeld (2008) terminal velocity, unbounded, falling %s: %.4f m/s;"
           " measured / that = %.3f" % ("broadside" if info["release"] == "H" else "along the"
                                        " long axis", wHS, wT / wHS))
@@ -220,32 +222,38 @@ unset multiplot
     gnuplot(script, case)
 
 
+def facets(i):
+    f = i["facets"]
+    return "%d" % f if isinstance(f, float) else f
+
+
 def table(results):
     os.makedirs(os.path.join(here, "postProcessing"), exist_ok=True)
     head = ("case AR C release d/dx cells deltaT endTime wTerminal plateauFrom plateauTo"
-            " drift wHolzerSommerfeld wMax tMax wMaxCellAvg maxOmega maxTilt tiltEnd FzOverNetWeight cpu_s wall_s")
+            " drift wHolzerSommerfeld wMax tMax wMaxCellAvg maxOmega maxTilt tiltAtMaxW tiltEnd FzOverNetWeight cpu_s wall_s")
     with open(os.path.join(here, "postProcessing", "table.dat"), "w") as f:
         f.write("# " + head + "\n")
         for r in results:
             i = r["info"]
             f.write("%s %g %s %s %.3g %d %g %g %.5f %.4f %.4f %.4f %.5f %.5f %.4f %.5f %.3f %.2f"
-                    " %.2f %.4f %.0f %.0f\n"
-                    % (r["name"], i["AR"], i["facets"], i["release"], i["dOverDx"],
+                    " %.2f %.2f %.4f %.0f %.0f\n"
+                    % (r["name"], i["AR"], facets(i), i["release"], i["dOverDx"],
                        i["cells"], i["deltaT"], r["tLast"], r["wT"], r["win"][0], r["win"][1],
                        r["drift"], r["wHS"], r["wMax"], r["tMax"], r["wMaxS"], r["omMax"],
-                       r["tiltMax"], r["tiltEnd"], r["FzOverW"], r["cpu"], r["wall"]))
+                       r["tiltMax"], abs(r["tiltAtMax"]), r["tiltEnd"], r["FzOverW"], r["cpu"],
+                       r["wall"]))
     md = ["| case | AR | C | release | d/dx | cells | dt [s] | t_end [s] | terminal w [m/s] "
           "(plateau window, drift) | Hölzer–Sommerfeld w [m/s] | max w [m/s] (t) | max w, cell-avg. | w_max / w_term | "
-          "max tilt [deg] | F_z / net weight (plateau) | CPU / wall [s] |",
-          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+          "max tilt [deg] | tilt at max w [deg] | F_z / net weight (plateau) | CPU / wall [s] |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results:
         i = r["info"]
         md.append("| %s | %g | %s | %s | %.3g | %d | %g | %g | %.4f (%.2f–%.2f s, %+.1f %%) | %.3f |"
-                  " %.4f (%.3f s) | %.4f | %.2f | %.1f | %.3f | %.0f / %.0f |"
-                  % (r["name"], i["AR"], i["facets"], i["release"], i["dOverDx"], i["cells"],
+                  " %.4f (%.3f s) | %.4f | %.2f | %.1f | %.1f | %.3f | %.0f / %.0f |"
+                  % (r["name"], i["AR"], facets(i), i["release"], i["dOverDx"], i["cells"],
                      i["deltaT"], r["tLast"], r["wT"], r["win"][0], r["win"][1],
                      100 * r["drift"], r["wHS"], r["wMax"], r["tMax"], r["wMaxS"], r["wMax"] / r["wT"],
-                     r["tiltMax"], r["FzOverW"], r["cpu"], r["wall"]))
+                     r["tiltMax"], abs(r["tiltAtMax"]), r["FzOverW"], r["cpu"], r["wall"]))
     text = "\n".join(md)
     print(text)
     readme = os.path.join(here, "README.md")
@@ -257,14 +265,17 @@ def table(results):
             open(readme, "w").write(s)
             print("updated the table in README.md")
     # comparison plot
-    curves = ", ".join("'cases/%s/postProcessing/settling/settling.dat' u 1:(-$3) w l lw 2 t '%s'"
-                       % (r["name"], r["name"]) for r in results)
+    # comparison plot of the polyhedra (H solid, V dashed)
+    curves = ", ".join("'cases/%s/postProcessing/settling/settling.dat' u 1:(-$3) w l lw 2 %s"
+                       " t '%s'" % (r["name"], "dt 1" if r["info"]["release"] == "H" else "dt 2",
+                                    r["name"])
+                       for r in results if r["info"]["name"] != "ellipsoid")
     if curves:
-        gnuplot("""set terminal pngcairo size 800,500 noenhanced
+        gnuplot("""set terminal pngcairo size 1000,550 noenhanced
 set output 'postProcessing/settling.png'
 set xlabel 't [s]'
 set ylabel 'settling velocity -w [m/s]'
-set key bottom right
+set key outside right
 plot %s
 """ % curves, here)
 
