@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Drafting, kissing and tumbling of two spheres against Glowinski et al. (2001).
 
-Usage: plotDrafting.py [--check TOL] [--kissGap G]
+Usage: plotDrafting.py [--check TOL | --checkKiss TOL] [--kissGap G]
 
 Reads postProcessing/ibForces/*/forces.dat (demIbFoam: one row per sphere
 and step), writes postProcessing/drafting/spheres.dat
@@ -11,14 +11,16 @@ and step), writes postProcessing/drafting/spheres.dat
 displacements and velocities of both spheres against the digitised
 reference, and the gap. Prints
   kiss time:   the first time the surface gap falls below G d (default
-               0.02 d: contact in the DEM or within the lubrication range
-               of the finest gap the mesh sees), and the time of the
-               follower's peak downward velocity;
+               0.02 d = 33 um: at or in contact; the mesh resolves no gap
+               below about a cell, 0.2 d), and the time of the follower's
+               peak downward velocity;
   tumble time: the first time the follower is below the leader (the
                vertical positions cross).
 --check TOL: exit status 1 when the kiss time (gap) is further than TOL
 (fraction) from the reference interval 0.155-0.16 s, or the tumble time
-further than TOL from 0.25 s.
+further than TOL from 0.25 s, or when the positions cross only after a
+sphere reached the bottom (that is not a tumble). --checkKiss TOL: the kiss
+time only.
 
 Reference (/work/shared/reference/glowinskiDKT.md; cgs there): the
 following sphere peaks at about -0.182 m/s near t = 0.155 s, the kiss is
@@ -41,6 +43,9 @@ ref = [(0, 4.994, 4.503), (0.05, 4.774, 4.269), (0.10, 4.263, 3.759),
 
 args = sys.argv[1:]
 tol = float(args[args.index("--check") + 1]) if "--check" in args else None
+kissOnly = "--checkKiss" in args
+if kissOnly:
+    tol = float(args[args.index("--checkKiss") + 1])
 kissGap = float(args[args.index("--kissGap") + 1]) if "--kissGap" in args else 0.02
 
 files = sorted(glob.glob("postProcessing/ibForces/*/forces.dat"))
@@ -86,6 +91,11 @@ if kT is not None:
     # linear interpolation of the crossing
     a, b = zF[kT - 1] - zL[kT - 1], zF[kT] - zL[kT]
     tTumble = t[kT - 1] + (t[kT] - t[kT - 1]) * a / (a - b)
+# the first time a sphere is within 0.05 d of the bottom (z = 0): a
+# crossing after that is the follower rolling off the leader on the floor,
+# not a tumble in the fluid
+tBottom = next((t[k] for k in range(len(t)) if min(zL[k], zF[k]) < 0.55 * d), None)
+freeTumble = tTumble is not None and (tBottom is None or tTumble < tBottom)
 kEnd = kT if kT is not None else len(t)
 kPeak = min(range(kEnd), key=lambda k: wF[k])
 gapMin = min(range(len(t)), key=lambda k: gap[k])
@@ -112,6 +122,10 @@ print("  follower's peak velocity %.4f m/s at t = %.4f s (gap %.3f d); reference
 print("  tumble (vertical positions cross): %s; reference %g s: %s"
       % (("t = %.4f s" % tTumble) if tTumble else "not reached", tumbleRef,
          ("%+.1f %%" % (100 * (tTumble / tumbleRef - 1))) if tTumble else "-"))
+if tBottom is not None:
+    print("  a sphere reaches the bottom (gap < 0.05 d) at t = %.4f s%s"
+          % (tBottom, "" if freeTumble else
+             ": the positions cross after that, no tumble in the fluid"))
 print("  lateral separation at the end: %.3f d" % (abs(xF[-1] - xL[-1]) / d))
 
 try:
@@ -210,7 +224,8 @@ plot %(D)s u 1:(1000*($4-%(zF0).9g)) w l lw 2 lc rgb 'red' t 'following (upper)'
      %(R)s u 1:3 w p pt 6 lc rgb 'blue' t 'Glowinski et al. 2001, leading'
 set title 'vertical velocity (open symbols: differences of the reference z)'
 set ylabel 'w [m/s]'
-set key bottom left
+set yrange [-0.2:0.05]
+set key top right
 plot %(D)s u 1:5 w l lw 2 lc rgb 'red' t 'following', \\
      %(D)s u 1:3 w l lw 2 lc rgb 'blue' t 'leading', \\
      %(V)s u 1:2 w p pt 4 lc rgb 'red' notitle, \\
@@ -218,6 +233,7 @@ plot %(D)s u 1:5 w l lw 2 lc rgb 'red' t 'following', \\
      '-' w p pt 3 ps 2 lc rgb 'black' t 'reference follower peak'
 %(tp)g %(wp)g
 e
+set autoscale y
 set title 'gap; shaded: reference kiss, dotted: reference tumble, dashed: here'
 set ylabel '/ d'
 set key top right
@@ -235,8 +251,9 @@ unset multiplot
 
 if tol is not None:
     dK = dev(tKiss, *kissRef)
-    dT = dev(tTumble, tumbleRef, tumbleRef)
-    ok = dK <= tol and dT <= tol
-    print("%s: kiss %.1f %%, tumble %.1f %% from the reference (tolerance %.1f %%)"
-          % ("PASS" if ok else "FAIL", 100 * dK, 100 * dT, 100 * tol))
+    dT = dev(tTumble if freeTumble else None, tumbleRef, tumbleRef)
+    ok = dK <= tol and (kissOnly or dT <= tol)
+    print("%s: kiss %.1f %%%s from the reference (tolerance %.1f %%)"
+          % ("PASS" if ok else "FAIL", 100 * dK,
+             "" if kissOnly else (", tumble %.1f %%" % (100 * dT)), 100 * tol))
     sys.exit(0 if ok else 1)
