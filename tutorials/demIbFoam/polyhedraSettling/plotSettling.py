@@ -265,11 +265,18 @@ def table(results):
             open(readme, "w").write(s)
             print("updated the table in README.md")
     # comparison plot
-    # comparison plot of the polyhedra (H solid, V dashed)
-    curves = ", ".join("'cases/%s/postProcessing/settling/settling.dat' u 1:(-$3) w l lw 2 %s"
-                       " t '%s'" % (r["name"], "dt 1" if r["info"]["release"] == "H" else "dt 2",
-                                    r["name"])
-                       for r in results if r["info"]["name"] != "ellipsoid")
+    # comparison plot of the polyhedra: colour = AR, thin C 20 / thick C 50,
+    # solid H / dashed V; cases at another resolution than the first dotted
+    colours = {1.25: "#7b2cbf", 1.5: "#2a9d8f", 1.75: "#1d70c2", 2.0: "#e76f51"}
+    poly = [r for r in results if r["info"]["name"] != "ellipsoid"]
+    n0 = poly[0]["info"]["dOverDx"] if poly else 0
+    curves = ", ".join(
+        "'cases/%s/postProcessing/settling/settling.dat' u 1:(-$3) w l lc rgb '%s' lw %g dt %d"
+        " t '%s'" % (r["name"], colours.get(r["info"]["AR"], "black"),
+                     1.5 if facets(r["info"]) == "20" else 3.0,
+                     3 if abs(r["info"]["dOverDx"] - n0) > 0.01 else
+                     (1 if r["info"]["release"] == "H" else 2), r["name"])
+        for r in poly)
     if curves:
         gnuplot("""set terminal pngcairo size 1000,550 noenhanced
 set output 'postProcessing/settling.png'
