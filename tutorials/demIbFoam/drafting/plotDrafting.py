@@ -96,7 +96,11 @@ if kT is not None:
 # not a tumble in the fluid
 tBottom = next((t[k] for k in range(len(t)) if min(zL[k], zF[k]) < 0.55 * d), None)
 freeTumble = tTumble is not None and (tBottom is None or tTumble < tBottom)
+# the follower's peak speed of the drafting: before the kiss (5 ms after it
+# at most), else before the tumble
 kEnd = kT if kT is not None else len(t)
+if tKiss is not None:
+    kEnd = min(kEnd, next((k for k in range(len(t)) if t[k] > tKiss + 0.005), len(t)))
 kPeak = min(range(kEnd), key=lambda k: wF[k])
 gapMin = min(range(len(t)), key=lambda k: gap[k])
 
@@ -125,7 +129,9 @@ print("  tumble (vertical positions cross): %s; reference %g s: %s"
 if tBottom is not None:
     print("  a sphere reaches the bottom (gap < 0.05 d) at t = %.4f s%s"
           % (tBottom, "" if freeTumble else
-             ": the positions cross after that, no tumble in the fluid"))
+             ": no tumble in the fluid before that%s"
+             % ((", the positions cross at %.4f s on the floor" % tTumble)
+                if tTumble else "")))
 print("  lateral separation at the end: %.3f d" % (abs(xF[-1] - xL[-1]) / d))
 
 try:
