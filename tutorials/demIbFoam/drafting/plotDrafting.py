@@ -261,5 +261,6 @@ if tol is not None:
     ok = dK <= tol and (kissOnly or dT <= tol)
     print("%s: kiss %.1f %%%s from the reference (tolerance %.1f %%)"
           % ("PASS" if ok else "FAIL", 100 * dK,
-             "" if kissOnly else (", tumble %.1f %%" % (100 * dT)), 100 * tol))
+             "" if kissOnly else (", tumble %.1f %%" % (100 * dT) if freeTumble
+                                  else ", no tumble in the fluid"), 100 * tol))
     sys.exit(0 if ok else 1)
