@@ -172,7 +172,7 @@ try:
         a.axvline(tumbleRef, color="purple", ls=":")
         if tKiss:
             a.axvline(tKiss, color="orange", ls="--")
-        if tTumble:
+        if freeTumble:
             a.axvline(tTumble, color="purple", ls="--")
         a.set_xlabel("t [s]")
     ax[0].plot([], [], color="orange", lw=6, alpha=0.3, label="reference kiss")
@@ -209,7 +209,7 @@ except ImportError:
         if tKiss:
             marks += ("set arrow 2 from %g, graph 0 to %g, graph 1 nohead dt 2 "
                       "lc rgb 'orange'\n" % (tKiss, tKiss))
-        if tTumble:
+        if freeTumble:
             marks += ("set arrow 3 from %g, graph 0 to %g, graph 1 nohead dt 2 "
                       "lc rgb 'purple'\n" % (tTumble, tTumble))
         D = "'postProcessing/drafting/spheres.dat'"
@@ -231,7 +231,7 @@ plot %(D)s u 1:(1000*($4-%(zF0).9g)) w l lw 2 lc rgb 'red' t 'following (upper)'
 set title 'vertical velocity (open symbols: differences of the reference z)'
 set ylabel 'w [m/s]'
 set yrange [-0.2:0.05]
-set key top right
+set key bottom right
 plot %(D)s u 1:5 w l lw 2 lc rgb 'red' t 'following', \\
      %(D)s u 1:3 w l lw 2 lc rgb 'blue' t 'leading', \\
      %(V)s u 1:2 w p pt 4 lc rgb 'red' notitle, \\
