@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Make one case of the polyhedral settling study from template/.
 
-Usage: makeCase.py NAME [-n N] [-full] [-endTime T] [-tilt DEG]
+Usage: makeCase.py NAME [-n N] [-full] [-endTime T] [-height H] [-tilt DEG] [-dir D]
   NAME       A<AR>C<C><H|V>  e.g. A1.25C20H (aspect ratio 1.25, 20 facets,
              horizontal release), A2.0C50V (vertical release), or
              ellipsoid (the verification particle, see README.md)
