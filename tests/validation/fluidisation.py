@@ -94,18 +94,10 @@ bed = hc.measure_bed(case, tstr, tEnd, W, zFloor, d)
 Vs, A, L, eps = bed["Vs"], bed["A"], bed["L"], bed["eps"]
 
 def ergun(U):
-    return L * (150 * mu * (1 - eps)**2 * U / (eps**3 * d**2)
-                + 1.75 * rho * (1 - eps) * U**2 / (eps**3 * d))
+    return hc.ergun_dp(U, L, eps, d, mu, rho)
 
 # 4. Pressure drop at the end of each plateau
-rows = []
-pp = os.path.join(case, "postProcessing/inletP", tstr, "surfaceFieldValue.dat")
-with open(pp) as f:
-    for l in f:
-        if l.startswith("#") or not l.strip():
-            continue
-        t, pin = l.split()[:2]
-        rows.append((float(t), float(pin)))
+rows = hc.read_inlet_p(case, tstr)
 results = []
 W = Vs * (rhoP - rho) * 9.81 / A
 dps = []

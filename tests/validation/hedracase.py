@@ -277,3 +277,23 @@ def measure_bed(case, tstr, tEnd, W, zFloor, d):
     shift = max(abs(p[3] - zEnd[p[4]]) for p in P)
     print(f"largest vertical particle displacement during the flow: {shift*1e3:.4f} mm")
     return {"Vs": Vs, "A": A, "L": L, "eps": eps, "epsCore": epsCore}
+
+
+def ergun_dp(U, L, eps, d, mu, rho):
+    """Ergun (1952) pressure drop [Pa] of a packed bed of height L, voidage
+    eps, particle diameter d, at superficial velocity U."""
+    return L * (150 * mu * (1 - eps)**2 * U / (eps**3 * d**2)
+                + 1.75 * rho * (1 - eps) * U**2 / (eps**3 * d))
+
+
+def read_inlet_p(case, tstr):
+    """(t, p_inlet) rows of the inletP surfaceFieldValue function object."""
+    rows = []
+    pp = os.path.join(case, "postProcessing/inletP", tstr, "surfaceFieldValue.dat")
+    with open(pp) as f:
+        for l in f:
+            if l.startswith("#") or not l.strip():
+                continue
+            t, pin = l.split()[:2]
+            rows.append((float(t), float(pin)))
+    return rows
