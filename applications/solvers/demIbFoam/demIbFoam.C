@@ -14,6 +14,8 @@ Description
       1. PIMPLE: ddt(U) + div(phi U) - div(nu grad U) = -grad(p) + fIB,
          (fIB: the IB's kept body force, zero unless integralForcing)
          div(U) = 0                                   (p kinematic)
+         plus any fvOptions (system/fvOptions, e.g. a mean pressure gradient
+         in a periodic box: vectorSemiImplicitSource or meanVelocityForce)
       2. IB: lambda, Us from the bodies' true shapes; U corrected to
          U_p + omega x r inside the bodies; projection (phiIB); fluid force
          and torque per body from the momentum of the correction
@@ -31,6 +33,7 @@ Description
 #include "dynamicFvMesh.H"
 #include "pimpleControl.H"
 #include "CorrectPhi.H"
+#include "fvOptions.H"
 #include "directForcingIB.H"
 #include "ibParticles.H"
 #include "ibRefinementIndicator.H"
@@ -50,6 +53,7 @@ int main(int argc, char *argv[])
     #include "createDynamicFvMesh.H"
     #include "createDyMControls.H"
     #include "createFields.H"
+    #include "createFvOptions.H"
     #include "createUfIfPresent.H"
 
     scalar cumulativeContErr = 0;
@@ -59,7 +63,8 @@ int main(int argc, char *argv[])
     (
         U,
         p,
-        particles.dict().optionalSubDict("directForcing")
+        particles.dict().optionalSubDict("directForcing"),
+        nu.value()
     );
     ib.update(particles.bodies());
 

@@ -125,6 +125,7 @@ directForcing
     nSubSamples        4;
     pressureCorrection true;
     nCorrections       1;
+    interface          penalised;   // explicit | penalised | none (directForcingIB.H)
     integralForcing    true;
     integralThreshold  0.5;
 }

@@ -6,12 +6,14 @@
 #include "fvm.H"
 #include "fvc.H"
 #include "fvMatrices.H"
+#include "syncTools.H"
 
 Foam::directForcingIB::directForcingIB
 (
     const volVectorField& U,
     const volScalarField& p,
-    const dictionary& dict
+    const dictionary& dict,
+    const scalar nu
 )
 :
     mesh_(U.mesh()),
@@ -23,6 +25,24 @@ Foam::directForcingIB::directForcingIB
     (
         dict.getOrDefault<scalar>("integralThreshold", 0.5)
     ),
+    interface_(dict.getOrDefault<word>("interface", "penalised")),
+    nu_(nu),
+    beta_
+    (
+        IOobject
+        (
+            "betaIB",
+            mesh_.time().timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh_,
+        dimensionedScalar(dimless/dimTime, Zero),
+        "zeroGradient"
+    ),
+    fullCell_(mesh_.nCells(), false),
+    forcedBody_(mesh_.nCells(), -1),
     fIB_
     (
         IOobject
@@ -90,6 +110,23 @@ Foam::directForcingIB::directForcingIB
         FatalIOErrorInFunction(dict)
             << "nSubSamples must be >= 1, not " << nSub_ << exit(FatalIOError);
     }
+    if
+    (
+        interface_ != "explicit" && interface_ != "penalised"
+     && interface_ != "none"
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "interface " << interface_ << " is not one of explicit, "
+            << "penalised, none" << exit(FatalIOError);
+    }
+    if (interface_ != "explicit" && !integral_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "interface " << interface_ << " needs integralForcing true "
+            << "(only the explicit interface has a one-step form)"
+            << exit(FatalIOError);
+    }
     mesh_.setFluxRequired(phiIB_.name());
     updateCellBoxes();
 }
@@ -103,6 +140,8 @@ void Foam::directForcingIB::updateCellBoxes()
     cellMax_.setSize(mesh_.nCells());
     cellHalfDiag_.setSize(mesh_.nCells());
     cellBody_.setSize(mesh_.nCells());
+    fullCell_.setSize(mesh_.nCells());
+    forcedBody_.setSize(mesh_.nCells());
     forAll(cp, celli)
     {
         point lo(GREAT, GREAT, GREAT), hi(-GREAT, -GREAT, -GREAT);
@@ -206,15 +245,143 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
         }
     }
 
+    // Cells forced fully (kept forcing) and, penalised interface, the
+    // interface cells outside the surface with their penalisation rate
+    scalarField& beta = beta_.primitiveFieldRef();
+    beta = 0;
+    fullCell_ = false;
+    forcedBody_ = -1;
+    if (interface_ == "penalised")
+    {
+        // Full cells: centre inside a body (the nearest surface's body)
+        const scalarField& V = mesh_.V();
+        scalarField sMin(C.size(), GREAT);
+        labelList nearest(C.size(), -1);
+        forAll(bodies, bi)
+        {
+            const ibBody& b = bodies[bi];
+            forAll(C, celli)
+            {
+                const scalar reach = b.radius + cellHalfDiag_[celli];
+                if (magSqr(C[celli] - b.position) > reach*reach)
+                {
+                    continue;
+                }
+                const scalar sd = b.signedDistance(C[celli]);
+                if (sd < sMin[celli])
+                {
+                    sMin[celli] = sd;
+                    nearest[celli] = bi;
+                }
+            }
+        }
+        // Body of each full cell, -1 elsewhere (also across coupled faces)
+        labelList fullBody(C.size(), -1);
+        forAll(C, celli)
+        {
+            if (nearest[celli] >= 0 && sMin[celli] <= 0)
+            {
+                fullBody[celli] = nearest[celli];
+                fullCell_[celli] = true;
+                forcedBody_[celli] = nearest[celli];
+                us[celli] = bodies[nearest[celli]].rigidVelocity(C[celli]);
+            }
+        }
+
+        // Interface cells: a fluid cell next to a full one across face f
+        // sees the wall at the fraction theta of the way to that cell's
+        // centre instead of at the centre itself; the sink
+        //     beta_f = nu |S_f|/(|d| V_c) (1 - theta)/theta
+        // is the difference between the two one-sided gradients (a
+        // Shortley-Weller wall), so that the no-slip point of the linear
+        // profile falls on the surface
+        const labelUList& own = mesh_.owner();
+        const labelUList& nei = mesh_.neighbour();
+        const vectorField& Sf = mesh_.Sf();
+        auto addFace = [&]
+        (
+            const label c, const point& xNbr, const label bi, const scalar magSf
+        )
+        {
+            const ibBody& b = bodies[bi];
+            const scalar magD = mag(xNbr - C[c]);
+            const scalar theta =
+                max(b.entryFraction(C[c], xNbr), scalar(1e-3));
+            beta[c] += nu_*magSf/(magD*V[c])*(1 - theta)/theta;
+            forcedBody_[c] = bi;
+            us[c] = b.rigidVelocity(C[c]);
+        };
+        forAll(nei, facei)
+        {
+            const label o = own[facei], n = nei[facei];
+            if (fullBody[o] >= 0 && fullBody[n] < 0)
+            {
+                addFace(n, C[o], fullBody[o], mag(Sf[facei]));
+            }
+            else if (fullBody[n] >= 0 && fullBody[o] < 0)
+            {
+                addFace(o, C[n], fullBody[n], mag(Sf[facei]));
+            }
+        }
+        labelList nbrFullBody;
+        syncTools::swapBoundaryCellList(mesh_, fullBody, nbrFullBody);
+        pointField nbrC;
+        syncTools::swapBoundaryCellPositions(mesh_, C, nbrC);
+        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+        for (const polyPatch& pp : pbm)
+        {
+            if (!pp.coupled())
+            {
+                continue;
+            }
+            forAll(pp, i)
+            {
+                const label facei = pp.start() + i;
+                const label bFacei = facei - mesh_.nInternalFaces();
+                const label c = own[facei];
+                if (fullBody[c] < 0 && nbrFullBody[bFacei] >= 0)
+                {
+                    addFace
+                    (
+                        c,
+                        nbrC[bFacei],
+                        nbrFullBody[bFacei],
+                        mag(mesh_.faceAreas()[facei])
+                    );
+                }
+            }
+        }
+    }
+    else if (integral_)
+    {
+        forAll(C, celli)
+        {
+            if (cellBody_[celli] >= 0 && lam[celli] >= integralThreshold_)
+            {
+                fullCell_[celli] = true;
+                forcedBody_[celli] = cellBody_[celli];
+            }
+            else if (cellBody_[celli] >= 0 && interface_ == "explicit")
+            {
+                forcedBody_[celli] = cellBody_[celli];
+            }
+        }
+    }
+    else
+    {
+        forcedBody_ = cellBody_;
+    }
+    beta_.correctBoundaryConditions();
+
     lambda_.correctBoundaryConditions();
     Us_.correctBoundaryConditions();
 
-    // Cells a body has left (or now covers less than the threshold) carry
-    // no kept forcing
+    // Cells a body has left (or that are no longer forced fully) carry no
+    // kept forcing
     vectorField& fib = fIB_.primitiveFieldRef();
     forAll(fib, celli)
     {
-        if (cellBody_[celli] < 0 || lam[celli] < integralThreshold_)
+        if (!fullCell_[celli])
         {
             fib[celli] = Zero;
         }
@@ -245,28 +412,39 @@ void Foam::directForcingIB::correctVelocity
     vectorField& u = U.primitiveFieldRef();
     vectorField& fib = fIB_.primitiveFieldRef();
 
+    const scalarField& beta = beta_.primitiveField();
+
     forAll(u, celli)
     {
-        const label bi = cellBody_[celli];
+        const label bi = forcedBody_[celli];
         if (bi < 0)
         {
             continue;
         }
-        vector du = lam[celli]*(us[celli] - u[celli]);
-        vector f = rhoFluid*du*V[celli]/dt;   // on the fluid
-        if (integral_ && lam[celli] >= integralThreshold_)
+        vector f(Zero);     // force on the fluid
+        if (fullCell_[celli])
         {
-            // Kept forcing drives U to Us exactly: only in cells at least
-            // integralThreshold inside, so that the blocked volume matches
-            // the body's (with all cells lambda > 0 the body grows by
-            // about one cell)
-            du = us[celli] - u[celli];
+            // Kept forcing drives U to Us exactly
+            const vector du = us[celli] - u[celli];
             fib[celli] += du/dt;
             f = rhoFluid*fib[celli]*V[celli];
+            u[celli] += du;
+        }
+        else if (beta[celli] > 0)
+        {
+            // Penalised interface cell: the implicit source of the
+            // momentum equation, evaluated with the solved velocity
+            f = rhoFluid*beta[celli]*(us[celli] - u[celli])*V[celli];
+        }
+        else
+        {
+            // Explicit interface: one-step correction weighted by lambda
+            const vector du = lam[celli]*(us[celli] - u[celli]);
+            f = rhoFluid*du*V[celli]/dt;
+            u[celli] += du;
         }
         force_[bi] -= f;
         torque_[bi] -= (C[celli] - bodies[bi].position) ^ f;
-        u[celli] += du;
     }
     U.correctBoundaryConditions();
     fIB_.correctBoundaryConditions();
@@ -276,6 +454,22 @@ void Foam::directForcingIB::correctVelocity
     Pstream::listCombineScatter(force_);
     Pstream::listCombineGather(torque_, plusEqOp<vector>());
     Pstream::listCombineScatter(torque_);
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::directForcingIB::source
+(
+    const volVectorField& U
+) const
+{
+    tmp<fvVectorMatrix> tS(new fvVectorMatrix(U, dimVolume*dimAcceleration));
+    fvVectorMatrix& S = tS.ref();
+    S += fIB_;
+    if (interface_ == "penalised")
+    {
+        S += beta_*Us_ - fvm::Sp(beta_, U);
+    }
+    return tS;
 }
 
 

@@ -10,7 +10,9 @@ constant/transportProperties; U = 1, d = 1, rho = 1).
         1 < Re <= 20:   C_d = 24/Re (1 + 0.1315 Re^(0.82 - 0.05 log10 Re))
         20 < Re <= 260: C_d = 24/Re (1 + 0.1935 Re^0.6305)
         (2.715 at Re = 20, 1.087 at Re = 100)
-The reference is Schiller-Naumann; tolerance 5 % (exit status 1 outside).
+The reference is the standard drag curve of Clift et al. (the fit is within
+about 1 % of it; Schiller-Naumann, an engineering fit, is 3.9 % below it at
+Re = 20 and is printed for comparison); tolerance 5 % (exit status 1 outside).
 C_d is averaged over the last 10 % of the run; the change over the last
 20 % is printed as a convergence measure.
 """
@@ -57,12 +59,12 @@ def mean(a, b):
 
 cdEnd = mean(0.9 * tEnd, tEnd)
 cdBefore = mean(0.7 * tEnd, 0.8 * tEnd)
-dev = cdEnd / cdSN - 1
+dev = cdEnd / cdClift - 1
 print("Re = %g" % Re)
 print("t_end = %g, C_d = %.4f (mean over the last 10 %%; %.4f at 0.7-0.8 t_end)"
       % (tEnd, cdEnd, cdBefore))
-print("Schiller-Naumann %.4f: deviation %+.2f %%" % (cdSN, 100 * dev))
-print("Clift et al.     %.4f: deviation %+.2f %%" % (cdClift, 100 * (cdEnd / cdClift - 1)))
+print("Clift et al.     %.4f: deviation %+.2f %%" % (cdClift, 100 * dev))
+print("Schiller-Naumann %.4f: deviation %+.2f %%" % (cdSN, 100 * (cdEnd / cdSN - 1)))
 ok = abs(dev) <= tol
 print("%s: |deviation| %s %.1f %%" % ("PASS" if ok else "FAIL",
                                       "<=" if ok else ">", 100 * tol))
