@@ -96,10 +96,60 @@ static const entry* findPath(const dictionary& top, const std::string& path)
     return rest.empty() ? e : nullptr;
 }
 
+//- Run read(); an OpenFOAM error inside it (ill-formed list, wrong token,
+//  excess tokens) stops with a FatalIOError naming the file and the entry
+//  path (e.g. insertion/release/particles[1]/position) and what was expected
+template<class Read>
+static void readOrFail
+(
+    const dictionary& top,
+    const dictionary& context,
+    const std::string& path,
+    const std::string& expected,
+    const Read& read
+)
+{
+    const bool prevIO = FatalIOError.throwExceptions();
+    const bool prev = FatalError.throwExceptions();
+    try
+    {
+        read();
+    }
+    catch (const Foam::error& err)
+    {
+        FatalIOError.throwExceptions(prevIO);
+        FatalError.throwExceptions(prev);
+        FatalIOErrorIn("demPropertiesReader::readParticleList", context)
+            << "Cannot read entry '" << path.c_str() << "' of " << top.name()
+            << nl << "Expected " << expected.c_str() << nl
+            << "(" << err.message().c_str() << ")" << nl
+            << exit(FatalIOError);
+    }
+    FatalIOError.throwExceptions(prevIO);
+    FatalError.throwExceptions(prev);
+}
+
 } // End namespace Foam
 
 
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+polydem::Quaternion Foam::demPropertiesReader::orientationQuaternion
+(
+    const vector& abc
+)
+{
+    const scalar deg = constant::mathematical::pi/180.0;
+    const polydem::Quaternion qx =
+        polydem::fromAxisAngle(polydem::Vec3(1, 0, 0), abc.x()*deg);
+    const polydem::Quaternion qy =
+        polydem::fromAxisAngle(polydem::Vec3(0, 1, 0), abc.y()*deg);
+    const polydem::Quaternion qz =
+        polydem::fromAxisAngle(polydem::Vec3(0, 0, 1), abc.z()*deg);
+    // x first, then y, then z (all about the world axes)
+    return polydem::normalised(qz*(qy*qx));
+}
+
 
 Foam::fileName Foam::demPropertiesReader::resolveSurface
 (
@@ -942,7 +992,7 @@ void Foam::demPropertiesReader::readInsertions()
     {
         return;
     }
-    static const wordList kinds({"randomFill"});
+    static const wordList kinds({"randomFill", "list"});
     for (const entry& e : *d)
     {
         if (!e.isDict())
@@ -953,15 +1003,28 @@ void Foam::demPropertiesReader::readInsertions()
                 << exit(FatalIOError);
         }
         const dictionary& id = e.dict();
-        selectName(id, "type", kinds, "insertion type");
+        const label kind = selectName(id, "type", kinds, "insertion type");
         insertion ins;
         ins.name = e.keyword();
         ins.type = typeIndex(id, "particleType");
+        ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (kind == 1)
+        {
+            ins.kind = insertion::method::list;
+            readParticleList(id, ins);
+            insertions_.push_back(std::move(ins));
+            continue;
+        }
         ins.number = id.get<label>("number");
         ins.seed = id.getOrDefault<label>("seed", 1);
         ins.gap = id.getOrDefault<scalar>("gap", 0);
         ins.velocity = toVec3(id.getOrDefault<vector>("velocity", Zero));
-        ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (id.found("orientation", keyType::LITERAL))
+        {
+            ins.fixedOrientation = true;
+            ins.orientation =
+                orientationQuaternion(id.get<vector>("orientation"));
+        }
         if (ins.number < 0)
         {
             FatalIOErrorInFunction(id)
@@ -1001,6 +1064,191 @@ void Foam::demPropertiesReader::readInsertions()
 }
 
 
+void Foam::demPropertiesReader::readParticleList
+(
+    const dictionary& id,
+    insertion& ins
+) const
+{
+    const std::string base = "insertion/" + ins.name + "/particles";
+    const char* listSyntax =
+        "a list of particle dictionaries: particles ( { position (x y z);"
+        " orientation (a b c); velocity (u v w); omega (wx wy wz); } ... );"
+        " orientation, velocity, omega optional";
+
+    for (const word key : {"number", "region", "seed", "gap",
+        "diameterDistribution", "orientation"})
+    {
+        if (id.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << ins.name << "/" << key
+                << "' is not used by an insertion of type list (the particles"
+                << " are given one by one in 'particles'); remove it from "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+    }
+
+    const entry* pe = id.findEntry("particles", keyType::LITERAL);
+    if (!pe || pe->isDict())
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "' "
+            << (pe ? "must be a list, not a dictionary," : "is missing")
+            << " in " << dict_.name() << nl
+            << "Expected " << listSyntax << nl << exit(FatalIOError);
+    }
+
+    List<dictionary> list;
+    readOrFail
+    (
+        dict_, id, base, listSyntax,
+        [&]()
+        {
+            ITstream& is = pe->stream();
+            is >> list;
+            if (is.nRemainingTokens())
+            {
+                FatalIOErrorInFunction(is)
+                    << is.nRemainingTokens() << " excess tokens after the"
+                    << " list" << exit(FatalIOError);
+            }
+        }
+    );
+    if (list.empty())
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "' is an empty list in "
+            << dict_.name() << nl << "Expected " << listSyntax << nl
+            << exit(FatalIOError);
+    }
+
+    // The insertion's velocity: default of its particles
+    vector listVelocity(Zero);
+    readOrFail
+    (
+        dict_, id, "insertion/" + ins.name + "/velocity",
+        "a velocity (u v w) [m/s]",
+        [&]() { listVelocity = id.getOrDefault<vector>("velocity", Zero); }
+    );
+    ins.velocity = toVec3(listVelocity);
+
+    const userType& ut = userTypes_[ins.type];
+    static const wordList valid
+    ({
+        "position", "orientation", "velocity", "omega", "shape", "diameter"
+    });
+    forAll(list, k)
+    {
+        const dictionary& pd = list[k];
+        const std::string path = base + "[" + std::to_string(k) + "]";
+        for (const entry& pdE : pd)
+        {
+            if (!valid.found(pdE.keyword()))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Unknown keyword '" << pdE.keyword() << "' in entry '"
+                    << path.c_str() << "' of " << dict_.name() << nl
+                    << "Valid keywords: " << valid << nl << exit(FatalIOError);
+            }
+        }
+        if (!pd.found("position", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry '" << path.c_str() << "/position' is missing in "
+                << dict_.name() << nl << "Expected " << listSyntax << nl
+                << exit(FatalIOError);
+        }
+
+        auto readVector = [&]
+        (
+            const word& key,
+            const char* what,
+            const vector& deflt = Zero
+        )
+        {
+            vector v(deflt);
+            if (pd.found(key, keyType::LITERAL))
+            {
+                readOrFail
+                (
+                    dict_, id, path + "/" + key, what,
+                    [&]() { v = pd.get<vector>(key); }
+                );
+            }
+            return v;
+        };
+
+        listParticle p;
+        p.position = toVec3(readVector("position", "a position (x y z) [m]"));
+        p.orientation = orientationQuaternion
+        (
+            readVector
+            (
+                "orientation",
+                "an orientation (a b c) [degrees]: rotations about the world"
+                " x, then y, then z axes"
+            )
+        );
+        p.velocity = toVec3
+        (
+            readVector("velocity", "a velocity (u v w) [m/s]", listVelocity)
+        );
+        p.omega = toVec3
+        (
+            readVector("omega", "an angular velocity (wx wy wz) [rad/s]")
+        );
+
+        label shape = 0;
+        if (pd.found("shape", keyType::LITERAL))
+        {
+            readOrFail
+            (
+                dict_, id, path + "/shape", "a shape index (label)",
+                [&]() { shape = pd.get<label>("shape"); }
+            );
+            if (shape < 0 || shape >= ut.nTypes)
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/shape' is " << shape
+                    << ": particle type '" << ut.name << "' has " << ut.nTypes
+                    << " shape(s), indices 0.." << ut.nTypes - 1 << ", in "
+                    << dict_.name() << nl << exit(FatalIOError);
+            }
+        }
+        p.type = ut.firstType + int(shape);
+        p.radius = config_.types[p.type].radius;
+        if (pd.found("diameter", keyType::LITERAL))
+        {
+            if (ut.polyhedron)
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/diameter': particle type '"
+                    << ut.name << "' is a polyhedron, whose size is set by its"
+                    << " geometry; remove the entry from " << dict_.name()
+                    << nl << exit(FatalIOError);
+            }
+            scalar d = 0;
+            readOrFail
+            (
+                dict_, id, path + "/diameter", "a diameter [m]",
+                [&]() { d = pd.get<scalar>("diameter"); }
+            );
+            if (!(d > 0))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/diameter' must be"
+                    << " positive in " << dict_.name() << nl
+                    << exit(FatalIOError);
+            }
+            p.radius = 0.5*d;
+        }
+        ins.particles.push_back(p);
+    }
+    ins.number = label(ins.particles.size());
+}
+
+
 void Foam::demPropertiesReader::readOutput()
 {
     stateFormat_ = polydem::StateFormat::ascii;
@@ -1036,6 +1284,15 @@ void Foam::demPropertiesReader::computeScene()
     }
     for (const auto& ins : insertions_)
     {
+        if (ins.kind == insertion::method::list)
+        {
+            for (const auto& p : ins.particles)
+            {
+                const polydem::Vec3 r(p.radius, p.radius, p.radius);
+                grow(p.position - r, p.position + r);
+            }
+            continue;
+        }
         const auto bb = ins.region.bounds();
         grow(bb.first, bb.second);
     }

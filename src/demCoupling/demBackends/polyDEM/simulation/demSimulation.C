@@ -180,6 +180,10 @@ polydem::ParticleState Foam::demSimulation::insert
 ) const
 {
     const auto& ins = input_.insertions()[k];
+    if (ins.kind == demPropertiesReader::insertion::method::list)
+    {
+        return insertList(ins, firstId);
+    }
     std::vector<polydem::SphereSeed> existing(obstacles.size());
     for (size_t i = 0; i < obstacles.size(); ++i)
     {
@@ -255,6 +259,10 @@ polydem::ParticleState Foam::demSimulation::insert
                     a*std::cos(twoPi*u2), b*std::sin(twoPi*u3)
                 }
             );
+            if (ins.fixedOrientation)
+            {
+                q[i] = ins.orientation;
+            }
         }
     }
 
@@ -285,6 +293,50 @@ polydem::ParticleState Foam::demSimulation::insert
         << (ut.polyhedron ? " polyhedra" : " spheres")
         << ", solid fraction of the region "
         << volume/std::max(ins.region.volume(), VSMALL) << endl;
+    return p;
+}
+
+
+polydem::ParticleState Foam::demSimulation::insertList
+(
+    const demPropertiesReader::insertion& ins,
+    int64_t firstId
+) const
+{
+    const auto& ut = input_.userTypes()[ins.type];
+    const auto& config = input_.config();
+    const size_t n = ins.particles.size();
+    std::vector<polydem::Vec3> positions(n);
+    std::vector<double> radii(n);
+    for (size_t i = 0; i < n; ++i)
+    {
+        positions[i] = ins.particles[i].position;
+        radii[i] = ins.particles[i].radius;
+    }
+
+    // The same path as randomFill: spheres of the type, then the shape,
+    // mass properties and the given orientation for polyhedra
+    polydem::ParticleState p =
+        system_->makeSpheres(ut.firstType, positions, radii, firstId);
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const auto& lp = ins.particles[i];
+        p.velocity[i] = lp.velocity;
+        p.omega[i] = lp.omega;
+        p.orientation[i] = lp.orientation;
+        if (ut.polyhedron)
+        {
+            const auto& type = config.types[lp.type];
+            const auto& shape = config.shapes[type.shapeIndex];
+            const double rho = config.materials[type.material].density;
+            p.type[i] = lp.type;
+            p.mass[i] = rho*shape.volume;
+            p.inertia[i] = rho*shape.inertiaPerDensity;
+            p.radius[i] = shape.boundingRadius;
+        }
+    }
+    Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
+        << (ut.polyhedron ? " polyhedra" : " spheres") << " (list)" << endl;
     return p;
 }
 
