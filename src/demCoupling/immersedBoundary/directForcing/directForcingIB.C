@@ -27,6 +27,7 @@ Foam::directForcingIB::directForcingIB
     ),
     interface_(dict.getOrDefault<word>("interface", "penalised")),
     nu_(nu),
+    minCrossing_(dict.getOrDefault<scalar>("minCrossing", 1e-3)),
     beta_
     (
         IOobject
@@ -306,7 +307,7 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
             const ibBody& b = bodies[bi];
             const scalar magD = mag(xNbr - C[c]);
             const scalar theta =
-                max(b.entryFraction(C[c], xNbr), scalar(1e-3));
+                max(b.entryFraction(C[c], xNbr), minCrossing_);
             beta[c] += nu_*magSf/(magD*V[c])*(1 - theta)/theta;
             forcedBody_[c] = bi;
             us[c] = b.rigidVelocity(C[c]);
