@@ -20,12 +20,12 @@ Usage: makeCase.py NAME [-n N] [-full] [-endTime T] [-height H] [-tilt DEG] [-di
 
 Writes the case folder (cases/NAME/): 0.orig, constant (ibProperties from template/,
 transportProperties, demProperties, triSurface/shape.stl from polyhedronGen),
-system (fvSchemes, fvSolution from template/, blockMeshDict, controlDict) and
-the DEM's initial state 0/polyDEM/state: demFoam is run once with endTime 0
-to write the state of a one-particle insertion, whose position and
-orientation are then set here (long axis = body x, the axis of least moment:
-along world x for H, along world z, tilted by -tilt about y, for V).
-The DEM (demIbFoam, motion polyDEM) then starts from that state.
+system (fvSchemes, fvSolution from template/, blockMeshDict, controlDict).
+The particle is released at rest by a `type list` insertion in
+constant/demProperties with its position and orientation (long axis = body
+x, the axis of least moment: along world x for H, along world z, tilted by
+-tilt about y, for V; `orientation (0 b 0)`, a rotation by b degrees about
+world y), inserted by demIbFoam (motion polyDEM) at the start.
 """
 import math
 import os
@@ -191,10 +191,18 @@ blocks ( hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (1 1 1) );
 boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );
 """ % (dEq / dx, 1e3 * dx, L, L, L, L, H, L, H, L, L, H, L, H, nxy, nxy, nz))
 
+# Release orientation: rotation by releaseAngle about world y, which turns
+# body x (the long axis) to (cos a, 0, -sin a)
+if horizontal:
+    releaseAngle = tilt               # long axis along world x
+else:
+    releaseAngle = 90.0 - tilt        # long axis tilt degrees from world z
+pos = (L / 2, L / 2, z0)
+
 demProps = """FoamFile { version 2.0; format ascii; class dictionary; object demProperties; }
 // %s, rho_p = %g kg/m3.
-// The initial position and orientation are set by makeCase.py in
-// 0/polyDEM/state (the insertion below only makes that state once).
+// Released at rest at the given position and orientation (rotation about
+// world y; body x, the long axis, along world x for H, near world z for V).
 // Contact only at the bottom (not studied): soft, so that the DEM step is
 // 1e-5 s (the published E = 0.1 GPa needs 1e-7 s); friction 0.2 and
 // restitution 0.3 as published.
@@ -211,14 +219,14 @@ walls
 }
 insertion
 {
-    one
+    release
     {
-        type randomFill; particleType particle; number 1; seed 1;
-        region { type box; min (0 0 0); max (%g %g %g); }
+        type list; particleType particle;
+        particles ( { position (%.17g %.17g %.17g); orientation (0 %.17g 0); } );
     }
 }
 output { format ascii; vtk true; }
-""" % (shapeNote, rhoP, dtDEM, rhoP, L, L, H)
+""" % ((shapeNote, rhoP, dtDEM, rhoP) + pos + (releaseAngle,))
 with open(os.path.join(case, "constant", "demProperties"), "w") as f:
     f.write(demProps)
 
@@ -237,43 +245,6 @@ writeFormat binary; writePrecision 12; timeFormat general; timePrecision 6;
 runTimeModifiable false;
 """ % (" ".join(sys.argv[1:]), app, endTime, dt, nWrite))
 
-
-# ---- initial DEM state ---------------------------------------------------
-controlDict(0, "demFoam")
-env = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
-out = subprocess.run(["demFoam", "-case", case], capture_output=True, text=True, env=env)
-with open(os.path.join(case, "log.init"), "w") as f:
-    f.write(out.stdout + out.stderr)
-statePath = os.path.join(case, "0", "polyDEM", "state")
-if out.returncode or not os.path.isfile(statePath):
-    sys.exit("demFoam (initial state) failed: see %s/log.init" % case)
-shutil.rmtree(os.path.join(case, "postProcessing"), ignore_errors=True)
-for pvd in ("particles.pvd", "walls.pvd", "polyhedra.pvd"):
-    if os.path.exists(os.path.join(case, pvd)):
-        os.remove(os.path.join(case, pvd))
-
-if horizontal:
-    a = math.radians(tilt)            # long axis (body x) along world x
-else:
-    a = math.radians(90.0 - tilt)     # long axis tilt degrees from world z
-# rotation by a about world y: body x -> (cos a, 0, -sin a)
-q = (math.cos(a / 2), 0.0, math.sin(a / 2), 0.0)
-pos = (L / 2, L / 2, z0)
-lines = open(statePath).read().split("\n")
-i = lines.index("data") + 1
-w = lines[i].split()
-# id type radius mass I(3) position(3) q(w x y z) U(3) omega(3) F(3) T(3) refPosition(3)
-w[7:10] = ["%.17g" % v for v in pos]
-w[10:14] = ["%.17g" % v for v in q]
-w[14:20] = ["0"] * 6
-w[26:29] = ["%.17g" % v for v in pos]
-lines[i] = " " + " ".join(w)
-with open(statePath, "w") as f:
-    f.write("\n".join(lines))
-for vtp in ("particles.vtp", "polyhedra.vtp"):
-    p = os.path.join(case, "0", "polyDEM", vtp)
-    if os.path.exists(p):
-        os.remove(p)        # written for the random orientation: out of date
 
 controlDict(tEnd, "demIbFoam")
 mP = rhoP * vol
