@@ -225,6 +225,12 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
 
     const vectorField& C = mesh_.C();
 
+    // Penalised interface: signed distance of each cell centre from the
+    // nearest surface, found in the same sweep as the solid fraction
+    const bool penalised = (interface_ == "penalised");
+    scalarField sMin(penalised ? C.size() : 0, GREAT);
+    labelList nearest(penalised ? C.size() : 0, -1);
+
     forAll(bodies, bi)
     {
         const ibBody& b = bodies[bi];
@@ -234,6 +240,15 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
             if (magSqr(C[celli] - b.position) > reach*reach)
             {
                 continue;
+            }
+            if (penalised)
+            {
+                const scalar sd = b.signedDistance(C[celli]);
+                if (sd < sMin[celli])
+                {
+                    sMin[celli] = sd;
+                    nearest[celli] = bi;
+                }
             }
             const scalar f = cellFraction(celli, b);
             // Overlapping bodies (contact): the larger share owns the cell
@@ -252,30 +267,10 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
     beta = 0;
     fullCell_ = false;
     forcedBody_ = -1;
-    if (interface_ == "penalised")
+    if (penalised)
     {
         // Full cells: centre inside a body (the nearest surface's body)
         const scalarField& V = mesh_.V();
-        scalarField sMin(C.size(), GREAT);
-        labelList nearest(C.size(), -1);
-        forAll(bodies, bi)
-        {
-            const ibBody& b = bodies[bi];
-            forAll(C, celli)
-            {
-                const scalar reach = b.radius + cellHalfDiag_[celli];
-                if (magSqr(C[celli] - b.position) > reach*reach)
-                {
-                    continue;
-                }
-                const scalar sd = b.signedDistance(C[celli]);
-                if (sd < sMin[celli])
-                {
-                    sMin[celli] = sd;
-                    nearest[celli] = bi;
-                }
-            }
-        }
         // Body of each full cell, -1 elsewhere (also across coupled faces)
         labelList fullBody(C.size(), -1);
         forAll(C, celli)
