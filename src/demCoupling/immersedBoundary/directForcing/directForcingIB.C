@@ -350,6 +350,7 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
     }
     else if (integral_)
     {
+        const bool explicitInterface = (interface_ == "explicit");
         forAll(C, celli)
         {
             if (cellBody_[celli] >= 0 && lam[celli] >= integralThreshold_)
@@ -357,7 +358,7 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
                 fullCell_[celli] = true;
                 forcedBody_[celli] = cellBody_[celli];
             }
-            else if (cellBody_[celli] >= 0 && interface_ == "explicit")
+            else if (cellBody_[celli] >= 0 && explicitInterface)
             {
                 forcedBody_[celli] = cellBody_[celli];
             }
