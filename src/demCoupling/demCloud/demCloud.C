@@ -1,62 +1,14 @@
 #include "demCloud.H"
+#include "demParallel.H"
 #include "mathematicalConstants.H"
-#include "OSspecific.H"
-#include "IOmanip.H"
-#include <fstream>
 
 namespace Foam
 {
     defineTypeNameAndDebug(demCloud, 0);
 }
 
-
-// * * * * * * * * * * * * * * * Local helpers * * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- Sum a list over the processors, result on every processor
-template<class T>
-void allSum(List<T>& l)
-{
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(l, plusEqOp<T>());
-        Pstream::listCombineScatter(l);
-    }
-}
-
-template<class T>
-void broadcast(T& value)
-{
-    if (Pstream::parRun())
-    {
-        Pstream::scatter(value);
-    }
-}
-
-word readChoice
-(
-    const dictionary& dict,
-    const word& key,
-    const wordList& valid,
-    const word& def
-)
-{
-    const word value(dict.getOrDefault<word>(key, def));
-    if (!valid.found(value))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown " << key << " '" << value << "' in " << dict.name()
-            << nl << "Valid " << key << " values: " << valid
-            << exit(FatalIOError);
-    }
-    return value;
-}
-
-} // End anonymous namespace
+using Foam::demParallel::allSum;
+using Foam::demParallel::broadcast;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -80,90 +32,21 @@ Foam::demCloud::demCloud
             IOobject::NO_WRITE
         )
     ),
+    settings_(dict_),
     U_(U),
     p_(p),
     rho_(rho),
-    formulation_(couplingFormulation::setI),
-    implicit_(true),
-    fluxVelocity_(true),
     backend_(),
     locate_(),
     voidFraction_(),
     smoothing_(),
-    forces_(),
-    needDivTau_(false),
-    needDUDt_(false),
-    needCurlU_(false),
     nSubSteps_(1),
-    voidfraction_
-    (
-        IOobject
-        (
-            "voidfraction",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::AUTO_WRITE
-        ),
-        mesh_,
-        dimensionedScalar("one", dimless, 1),
-        "zeroGradient"
-    ),
-    Us_
-    (
-        IOobject("Us", mesh_.time().timeName(), mesh_,
-            IOobject::NO_READ, IOobject::AUTO_WRITE),
-        mesh_,
-        dimensionedVector(dimVelocity, Zero),
-        "zeroGradient"
-    ),
-    Ksl_
-    (
-        IOobject("Ksl", mesh_.time().timeName(), mesh_,
-            IOobject::NO_READ, IOobject::AUTO_WRITE),
-        mesh_,
-        dimensionedScalar(dimDensity/dimTime, Zero),
-        "zeroGradient"
-    ),
-    KslUs_
-    (
-        IOobject("KslUs", mesh_.time().timeName(), mesh_,
-            IOobject::NO_READ, IOobject::NO_WRITE),
-        mesh_,
-        dimensionedVector(dimDensity*dimVelocity/dimTime, Zero),
-        "zeroGradient"
-    ),
-    fExchange_
-    (
-        IOobject("fExchange", mesh_.time().timeName(), mesh_,
-            IOobject::NO_READ, IOobject::AUTO_WRITE),
-        mesh_,
-        dimensionedVector(dimForce/dimVolume, Zero),
-        "zeroGradient"
-    ),
-    summary_(),
-    lastParticleMomentum_(Zero),
-    lastFluidMomentum_(Zero),
-    nOutside_(0),
-    maxCompletion_(0),
-    clock_(),
-    timeDem_(0),
-    timeParticles_(0),
-    timeForces_(0)
+    weights_(),
+    exchange_(mesh_),
+    forceContext_(mesh_, settings_, rho_, U_, p_, weights_, previousUp_),
+    forces_(),
+    io_(mesh_.time())
 {
-    Info<< "Reading couplingProperties (demCloud)" << endl;
-
-    formulation_ =
-        readChoice(dict_, "formulation", {"setI", "setII"}, "setI") == "setI"
-      ? couplingFormulation::setI
-      : couplingFormulation::setII;
-
-    implicit_ =
-        readChoice
-        (
-            dict_, "momentumCoupling", {"implicit", "explicit"}, "implicit"
-        ) == "implicit";
-
     if (Pstream::master())
     {
         backend_ = demBackend::New(mesh_.time(), dict_);
@@ -199,66 +82,25 @@ Foam::demCloud::demCloud
         }
     }
 
-    // Sub-cycling: the DEM steps per fluid step given in couplingProperties
-    // must be those of the time steps (demSimulation checks the division)
-    if (dict_.found("demStepsPerFluidStep"))
-    {
-        const label n = dict_.get<label>("demStepsPerFluidStep");
-        if (n != nSubSteps_)
-        {
-            FatalIOErrorInFunction(dict_)
-                << "demStepsPerFluidStep " << n << " in " << dict_.name()
-                << " does not match deltaT/timeStep = " << nSubSteps_
-                << " (controlDict deltaT " << mesh_.time().deltaTValue()
-                << " s, DEM time step "
-                << mesh_.time().deltaTValue()/max(nSubSteps_, 1) << " s)"
-                << nl << "    deltaT must be demStepsPerFluidStep DEM steps"
-                << exit(FatalIOError);
-        }
-    }
-    Info<< "    " << nSubSteps_ << " DEM steps per fluid step" << endl;
+    settings_.checkSubSteps(nSubSteps_, mesh_.time().deltaTValue());
 
     locate_ = locateModel::New(dict_, mesh_);
     voidFraction_ = voidFractionModel::New(dict_, mesh_, locate_());
     smoothing_ = smoothingModel::New(dict_, mesh_);
 
-    const wordList forceNames(dict_.get<wordList>("forceModels"));
+    const wordList& forceNames = settings_.forceModelNames();
     forces_.setSize(forceNames.size());
     forAll(forceNames, i)
     {
-        forces_.set(i, forceModel::New(forceNames[i], dict_, *this));
-        needDivTau_ = needDivTau_ || forceNames[i] == "viscousStress";
-        needDUDt_ = needDUDt_ || forceNames[i] == "virtualMass";
-        needCurlU_ = needCurlU_ || forceNames[i] == "SaffmanMeiLift";
+        forces_.set(i, forceModel::New(forceNames[i], dict_, forceContext_));
     }
 
-    fluxVelocity_ =
-        readChoice(dict_, "fluidVelocity", {"flux", "cell"}, "flux") == "flux";
-    Info<< "    fluid velocity at the particles: "
-        << (fluxVelocity_ ? "reconstruct(alphaPhi)/voidfraction" : "cell U")
-        << endl;
+    settings_.readParticleShapes
+    (
+        typeNames_, sphericity_, crosswiseSphericity_, dnByDv_
+    );
 
-    readShapes();
-
-    voidfraction_.oldTime();
-
-    if (Pstream::master())
-    {
-        const fileName dir
-        (
-            mesh_.time().globalPath()/"postProcessing"/"demCloud"
-           /mesh_.time().timeName()
-        );
-        mkDir(dir);
-        summary_.reset(new OFstream(dir/"summary.dat"));
-        summary_()
-            << "# time nParticles nOutside Fx Fy Fz (total fluid force on"
-            << " particles [N]) Pcx Pcy Pcz (coupled force on particles)"
-            << " Sfx Sfy Sfz (exchange source in the fluid) relErr"
-            << " Upx Upy Upz (mean particle velocity) xpx xpy xpz"
-            << " (mean position) alphaMin" << nl;
-        summary_().precision(12);
-    }
+    io_.openSummary();
 
     updateParticles();
 }
@@ -270,50 +112,6 @@ Foam::demCloud::~demCloud()
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::demCloud::readShapes()
-{
-    // Defaults from the back end (1 for spheres, the shape's for polyhedra)
-    const label nTypes = typeNames_.size();
-    dnByDv_.setSize(nTypes, scalar(1));
-    forAll(sphericity_, t)
-    {
-        if (sphericity_[t] != 1 || crosswiseSphericity_[t] != 1)
-        {
-            Info<< "    particle type " << typeNames_[t]
-                << " (polyhedron): sphericity " << sphericity_[t]
-                << ", crosswise " << crosswiseSphericity_[t] << endl;
-        }
-    }
-
-    const dictionary shapes(dict_.subOrEmptyDict("particleShapes"));
-    for (const entry& e : shapes)
-    {
-        const label t = typeNames_.find(e.keyword());
-        if (t < 0 || !e.isDict())
-        {
-            FatalIOErrorInFunction(shapes)
-                << "Unknown particle type '" << e.keyword() << "' in "
-                << shapes.name() << nl << "Valid particle types: "
-                << typeNames_ << exit(FatalIOError);
-        }
-        const dictionary& d = e.dict();
-        sphericity_[t] = d.get<scalar>("sphericity");
-        crosswiseSphericity_[t] =
-            d.getOrDefault<scalar>("crosswiseSphericity", sphericity_[t]);
-        dnByDv_[t] = d.getOrDefault<scalar>("dnByDv", 1);
-        if (sphericity_[t] <= 0 || sphericity_[t] > 1)
-        {
-            FatalIOErrorInFunction(d)
-                << "sphericity must be in (0, 1] in " << d.name()
-                << exit(FatalIOError);
-        }
-        Info<< "    particle type " << e.keyword() << ": sphericity "
-            << sphericity_[t] << ", crosswise " << crosswiseSphericity_[t]
-            << endl;
-    }
-}
-
-
 void Foam::demCloud::updateParticles()
 {
     // 1. Copy from the back end, broadcast
@@ -321,14 +119,7 @@ void Foam::demCloud::updateParticles()
     {
         backend_->particles(particles_);
     }
-    broadcast(particles_.id);
-    broadcast(particles_.type);
-    broadcast(particles_.radius);
-    broadcast(particles_.mass);
-    broadcast(particles_.position);
-    broadcast(particles_.velocity);
-    broadcast(particles_.omega);
-    broadcast(particles_.orientation);
+    demCouplingWeights::broadcast(particles_);
 
     const label n = particles_.size();
     const scalar pi = constant::mathematical::pi;
@@ -347,120 +138,16 @@ void Foam::demCloud::updateParticles()
     }
 
     // 2. Locate; the lowest processor holding the centre owns the particle
-    cell_.setSize(n);
-    List<label> owner(n);
-    owner = Pstream::nProcs();
-    forAll(cell_, i)
-    {
-        cell_[i] =
-            locate_->findCell
-            (
-                particles_.position[i],
-                hint_.lookup(particles_.id[i], -1)
-            );
-        if (cell_[i] >= 0)
-        {
-            owner[i] = Pstream::myProcNo();
-        }
-    }
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(owner, minEqOp<label>());
-        Pstream::listCombineScatter(owner);
-    }
-    hint_.clear();
-    nOutside_ = 0;
-    forAll(cell_, i)
-    {
-        if (owner[i] != Pstream::myProcNo())
-        {
-            cell_[i] = -1;
-        }
-        else
-        {
-            hint_.set(particles_.id[i], cell_[i]);
-        }
-        if (owner[i] == Pstream::nProcs())
-        {
-            ++nOutside_;
-        }
-    }
+    weights_.locate(particles_, locate_());
 
     // 3. Weights (CSR), completed to 1 in the centre's cell
-    wStart_.setSize(n + 1);
-    wCell_.clear();
-    wWeight_.clear();
-    List<scalar> wSum(n, scalar(0));
-    List<label> centreEntry(n);
-    centreEntry = -1;
-    forAll(cell_, i)
-    {
-        wStart_[i] = wCell_.size();
-        const label t = particles_.type[i];
-        voidFraction_->distributeShape
-        (
-            particles_.position[i],
-            particles_.radius[i],
-            particles_.orientation[i],
-            t < shapes_.size() && shapes_[t].polyhedron() ? &shapes_[t] : nullptr,
-            cell_[i],
-            wCell_,
-            wWeight_
-        );
-        for (label k = wStart_[i]; k < wCell_.size(); ++k)
-        {
-            wSum[i] += wWeight_[k];
-            if (wCell_[k] == cell_[i])
-            {
-                centreEntry[i] = k;
-            }
-        }
-        if (cell_[i] >= 0 && centreEntry[i] < 0)
-        {
-            centreEntry[i] = wCell_.size();
-            wCell_.append(cell_[i]);
-            wWeight_.append(0);
-        }
-    }
-    wStart_[n] = wCell_.size();
-    allSum(wSum);
-    maxCompletion_ = 0;
-    forAll(wSum, i)
-    {
-        maxCompletion_ = max(maxCompletion_, mag(1 - wSum[i]));
-    }
-    forAll(cell_, i)
-    {
-        if (centreEntry[i] >= 0)
-        {
-            wWeight_[centreEntry[i]] += 1 - wSum[i];
-        }
-    }
+    weights_.distribute(particles_, shapes_, voidFraction_());
 
     // 4. Void fraction
-    const scalarField& V = mesh_.V();
-    volScalarField solid
+    exchange_.updateVoidFraction
     (
-        IOobject("solidFraction", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedScalar(dimless, Zero),
-        "zeroGradient"
+        weights_, volume_, smoothing_(), voidFraction_->alphaMin()
     );
-    scalarField& s = solid.primitiveFieldRef();
-    forAll(cell_, i)
-    {
-        for (label k = wStart_[i]; k < wStart_[i + 1]; ++k)
-        {
-            s[wCell_[k]] += wWeight_[k]*volume_[i];
-        }
-    }
-    s /= V;
-    solid.correctBoundaryConditions();
-    smoothing_->smooth(solid);
-
-    scalarField& a = voidfraction_.primitiveFieldRef();
-    a = max(1 - s, voidFraction_->alphaMin());
-    voidfraction_.correctBoundaryConditions();
 }
 
 
@@ -472,16 +159,16 @@ void Foam::demCloud::computeForces
 )
 {
     const label n = particles_.size();
-    const scalarField& V = mesh_.V();
+    const List<label>& cell = weights_.cells();
 
     // The fluid velocity the particles see: the cell velocity, or the
     // superficial velocity reconstructed from the face fluxes divided by the
     // void fraction (continuity-consistent where alpha jumps, e.g. at the
     // edges of a packed bed, where the cell-centred U is poor)
     tmp<volVectorField> tUseen;
-    if (fluxVelocity_)
+    if (settings_.fluxVelocity())
     {
-        tUseen = fvc::reconstruct(alphaPhi)/voidfraction_;
+        tUseen = fvc::reconstruct(alphaPhi)/exchange_.voidfraction();
     }
     else
     {
@@ -489,52 +176,20 @@ void Foam::demCloud::computeForces
     }
     const volVectorField& Useen = tUseen();
 
-    // Fluid fields the force models may need
-    const volVectorField gradP(fvc::grad(p_));
-    tmp<volVectorField> tdivTau, tDUDt, tcurlU;
-    if (needDivTau_)
-    {
-        tdivTau =
-            fvc::laplacian(nuEff, U_)
-          + fvc::div(nuEff*dev2(T(fvc::grad(U_))));
-    }
-    if (needDUDt_)
-    {
-        tDUDt = fvc::ddt(U_) + (fvc::grad(U_) & U_);
-    }
-    if (needCurlU_)
-    {
-        tcurlU = fvc::curl(U_);
-    }
-
     // Weighted averages at the particles (partial sums, then summed)
-    Uf_.setSize(n);
-    Uf_ = Zero;
-    List<scalar> alphaP(n, scalar(0)), nuP(n, scalar(0));
-    List<vector> gradPP(n, Zero), divTauP(n, Zero), DUDtP(n, Zero),
-        curlUP(n, Zero);
-    forAll(cell_, i)
+    Uf_ = weights_.average(Useen.primitiveField());
+    const List<scalar> alphaP
+    (
+        weights_.average(exchange_.voidfraction().primitiveField())
+    );
+    const List<scalar> nuP(weights_.average(nu.primitiveField()));
+
+    // Fields the force models need, built and sampled by each model
+    forceContext_.setViscosity(nu, nuEff);
+    for (forceModel& m : forces_)
     {
-        for (label k = wStart_[i]; k < wStart_[i + 1]; ++k)
-        {
-            const label c = wCell_[k];
-            const scalar w = wWeight_[k];
-            Uf_[i] += w*Useen[c];
-            alphaP[i] += w*voidfraction_[c];
-            nuP[i] += w*nu[c];
-            gradPP[i] += w*gradP[c];
-            if (needDivTau_) divTauP[i] += w*tdivTau()[c];
-            if (needDUDt_) DUDtP[i] += w*tDUDt()[c];
-            if (needCurlU_) curlUP[i] += w*tcurlU()[c];
-        }
+        m.cacheFields(true);
     }
-    allSum(Uf_);
-    allSum(alphaP);
-    allSum(nuP);
-    allSum(gradPP);
-    if (needDivTau_) allSum(divTauP);
-    if (needDUDt_) allSum(DUDtP);
-    if (needCurlU_) allSum(curlUP);
 
     // Forces, by the owner of each particle
     beta_.setSize(n);
@@ -544,15 +199,10 @@ void Foam::demCloud::computeForces
     Fparticle_.setSize(n);
     Fparticle_ = Zero;
 
-    for (forceModel& m : forces_)
-    {
-        m.update();
-    }
-
     const scalar pi = constant::mathematical::pi;
-    forAll(cell_, i)
+    forAll(cell, i)
     {
-        if (cell_[i] < 0)
+        if (cell[i] < 0)
         {
             continue;
         }
@@ -571,10 +221,6 @@ void Foam::demCloud::computeForces
         ps.alpha = alphaP[i];
         ps.rho = rho_;
         ps.nu = nuP[i];
-        ps.gradP = gradPP[i];
-        ps.divTau = divTauP[i];
-        ps.DUDt = DUDtP[i];
-        ps.curlU = curlUP[i];
         ps.deltaT = mesh_.time().deltaTValue();
 
         particleForce pf;
@@ -586,91 +232,37 @@ void Foam::demCloud::computeForces
         Fcoupled_[i] = pf.Fcoupled;
         Fparticle_[i] = pf.Fparticle;
     }
+
+    for (forceModel& m : forces_)
+    {
+        m.cacheFields(false);
+    }
+    forceContext_.clearViscosity();
+
     allSum(beta_);
     allSum(Fcoupled_);
     allSum(Fparticle_);
 
     force_.setSize(n);
-    vector particleSide(Zero);
     forAll(force_, i)
     {
         const vector Fdrag = beta_[i]*(Uf_[i] - particles_.velocity[i]);
         force_[i] = Fdrag + Fcoupled_[i] + Fparticle_[i];
-        particleSide += Fdrag + Fcoupled_[i];
     }
 
-    // Exchange fields, same weights
-    scalarField& K = Ksl_.primitiveFieldRef();
-    vectorField& KU = KslUs_.primitiveFieldRef();
-    vectorField& fE = fExchange_.primitiveFieldRef();
-    vectorField& Us = Us_.primitiveFieldRef();
-    K = 0;
-    KU = Zero;
-    fE = Zero;
-    Us = Zero;
-    scalarField solidV(mesh_.nCells(), scalar(0));
-    forAll(cell_, i)
-    {
-        const vector& Up = particles_.velocity[i];
-        const vector Fexp =
-            implicit_
-          ? Fcoupled_[i]
-          : Fcoupled_[i] + beta_[i]*(Uf_[i] - Up);
-        for (label k = wStart_[i]; k < wStart_[i + 1]; ++k)
-        {
-            const label c = wCell_[k];
-            const scalar w = wWeight_[k];
-            K[c] += w*beta_[i];
-            KU[c] += w*beta_[i]*Up;
-            fE[c] -= w*Fexp;
-            if (implicit_)
-            {
-                // Deferred correction: with the implicit -Ksl U the fluid
-                // gets exactly -beta (Uf - Up) at the coupling time
-                fE[c] += w*beta_[i]*(U_[c] - Uf_[i]);
-            }
-            Us[c] += w*volume_[i]*Up;
-            solidV[c] += w*volume_[i];
-        }
-    }
-    forAll(Us, c)
-    {
-        if (solidV[c] > 0)
-        {
-            Us[c] /= solidV[c];
-        }
-    }
-
-    // Momentum balance of the exchange (before smoothing, which keeps the
-    // integrals only to its solver tolerance)
-    vector fluidSide(Zero);
-    forAll(K, c)
-    {
-        vector s = fE[c];
-        if (implicit_)
-        {
-            s += KU[c] - K[c]*U_[c];
-        }
-        fluidSide += s;
-    }
-    reduce(fluidSide, sumOp<vector>());
-    lastParticleMomentum_ = particleSide;
-    lastFluidMomentum_ = fluidSide;
-
-    K /= V;
-    KU /= V;
-    fE /= V;
-    Ksl_.correctBoundaryConditions();
-    KslUs_.correctBoundaryConditions();
-    fExchange_.correctBoundaryConditions();
-    Us_.correctBoundaryConditions();
-
-    if (smoothing_->active())
-    {
-        smoothing_->smooth(Ksl_);
-        smoothing_->smooth(KslUs_);
-        smoothing_->smooth(fExchange_);
-    }
+    // Exchange fields with the same weights, and the momentum balance
+    exchange_.update
+    (
+        weights_,
+        particles_.velocity,
+        volume_,
+        beta_,
+        Fcoupled_,
+        Uf_,
+        U_,
+        settings_.implicitCoupling(),
+        smoothing_()
+    );
 
     // Hand the forces to the back end (engine order) for the next advance
     if (Pstream::master())
@@ -685,45 +277,7 @@ void Foam::demCloud::computeForces
         velocityById_.set(particles_.id[i], particles_.velocity[i]);
     }
 
-    writeSummary();
-}
-
-
-void Foam::demCloud::writeSummary()
-{
-    if (!Pstream::master())
-    {
-        return;
-    }
-    const label n = particles_.size();
-    vector Ftot(Zero), Up(Zero), xp(Zero);
-    forAll(force_, i)
-    {
-        Ftot += force_[i];
-        Up += particles_.velocity[i];
-        xp += particles_.position[i];
-    }
-    if (n)
-    {
-        Up /= n;
-        xp /= n;
-    }
-    const scalar scale =
-        max(mag(lastParticleMomentum_), mag(lastFluidMomentum_));
-    const scalar relErr =
-        scale > 0 ? mag(lastParticleMomentum_ + lastFluidMomentum_)/scale : 0;
-
-    OFstream& os = summary_();
-    os  << mesh_.time().value() << ' ' << n << ' ' << nOutside_ << ' '
-        << Ftot.x() << ' ' << Ftot.y() << ' ' << Ftot.z() << ' '
-        << lastParticleMomentum_.x() << ' ' << lastParticleMomentum_.y()
-        << ' ' << lastParticleMomentum_.z() << ' '
-        << lastFluidMomentum_.x() << ' ' << lastFluidMomentum_.y() << ' '
-        << lastFluidMomentum_.z() << ' ' << relErr << ' '
-        << Up.x() << ' ' << Up.y() << ' ' << Up.z() << ' '
-        << xp.x() << ' ' << xp.y() << ' ' << xp.z() << ' '
-        << min(voidfraction_.primitiveField()) << nl;
-    os.flush();
+    io_.writeSummary(particles_, force_, weights_.nOutside(), exchange_);
 }
 
 
@@ -731,27 +285,13 @@ void Foam::demCloud::writeSummary()
 
 Foam::tmp<Foam::volScalarField> Foam::demCloud::KslByRho() const
 {
-    if (implicit_)
-    {
-        return Ksl_/dimensionedScalar("rho", dimDensity, rho_);
-    }
-    return tmp<volScalarField>::New
-    (
-        IOobject("KslByRho", mesh_.time().timeName(), mesh_),
-        mesh_,
-        dimensionedScalar(Ksl_.dimensions()/dimDensity, Zero)
-    );
+    return exchange_.KslByRho(rho_, settings_.implicitCoupling());
 }
 
 
 Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSourceByRho() const
 {
-    const dimensionedScalar rho("rho", dimDensity, rho_);
-    if (implicit_)
-    {
-        return (KslUs_ + fExchange_)/rho;
-    }
-    return fExchange_/rho;
+    return exchange_.explicitSourceByRho(rho_, settings_.implicitCoupling());
 }
 
 
@@ -762,33 +302,33 @@ void Foam::demCloud::evolve
     const surfaceScalarField& alphaPhi
 )
 {
-    const scalar t0 = clock_.elapsedTime();
+    const scalar t0 = io_.elapsedTime();
     if (Pstream::master())
     {
         backend_->evolve();
     }
-    const scalar t1 = clock_.elapsedTime();
+    const scalar t1 = io_.elapsedTime();
     updateParticles();
-    const scalar t2 = clock_.elapsedTime();
+    const scalar t2 = io_.elapsedTime();
     computeForces(nu, nuEff, alphaPhi);
-    const scalar t3 = clock_.elapsedTime();
-    timeDem_ += t1 - t0;
-    timeParticles_ += t2 - t1;
-    timeForces_ += t3 - t2;
+    const scalar t3 = io_.elapsedTime();
+    io_.addTimes(t1 - t0, t2 - t1, t3 - t2);
 
     Info<< "demCloud: " << particles_.size() << " particles";
-    if (nOutside_)
+    if (weights_.nOutside())
     {
-        Info<< " (" << nOutside_ << " outside the mesh)";
+        Info<< " (" << weights_.nOutside() << " outside the mesh)";
     }
-    Info<< ", voidfraction min " << gMin(voidfraction_.primitiveField())
-        << ", momentum exchange: particles " << lastParticleMomentum_
-        << " fluid " << lastFluidMomentum_ << nl
+    Info<< ", voidfraction min "
+        << gMin(exchange_.voidfraction().primitiveField())
+        << ", momentum exchange: particles " << exchange_.particleMomentum()
+        << " fluid " << exchange_.fluidMomentum() << nl
         << "demCloud: void-fraction weights completed in the centre cells by"
-        << " at most " << maxCompletion_ << " (max |1 - sum w|)" << nl
-        << "demCloud: cumulative CPU s: DEM " << timeDem_
-        << ", locate+voidfraction " << timeParticles_
-        << ", forces+exchange " << timeForces_ << endl;
+        << " at most " << weights_.maxCompletion() << " (max |1 - sum w|)"
+        << nl
+        << "demCloud: cumulative CPU s: DEM " << io_.timeDem()
+        << ", locate+voidfraction " << io_.timeParticles()
+        << ", forces+exchange " << io_.timeForces() << endl;
 }
 
 
@@ -797,31 +337,14 @@ void Foam::demCloud::write()
     if (Pstream::master())
     {
         backend_->write();
-        if (mesh_.time().writeTime())
-        {
-            // The forces the back end holds for its next advance: read back
-            // on restart so that a restarted run continues as if unbroken
-            const fileName dir(mesh_.time().timePath()/"polyDEM");
-            mkDir(dir);
-            OFstream os(dir/"fluidForces");
-            os.precision(17);
-            os  << "// demCloud: fluid force [N] per particle id, for restart"
-                << nl << force_.size() << nl;
-            forAll(force_, i)
-            {
-                os  << particles_.id[i] << ' ' << force_[i].x() << ' '
-                    << force_[i].y() << ' ' << force_[i].z() << nl;
-            }
-        }
+        io_.writeFluidForces(particles_.id, force_);
     }
 }
 
 
 bool Foam::demCloud::restartFilesPresent() const
 {
-    bool found =
-        Pstream::master()
-     && isFile(mesh_.time().timePath()/"polyDEM"/"fluidForces");
+    bool found = Pstream::master() && isFile(io_.fluidForcesFile());
     reduce(found, orOp<bool>());
     return found;
 }
@@ -832,34 +355,9 @@ bool Foam::demCloud::readRestartForces()
     bool found = false;
     if (Pstream::master())
     {
-        const fileName f(mesh_.time().timePath()/"polyDEM"/"fluidForces");
-        if (isFile(f))
+        if (io_.readFluidForces(particles_.id, force_))
         {
-            std::ifstream is(f);
-            std::string comment;
-            std::getline(is, comment);
-            long n = 0;
-            is >> n;
-            Map<vector> byId;
-            for (long k = 0; k < n; ++k)
-            {
-                long id;
-                double x, y, z;
-                is >> id >> x >> y >> z;
-                byId.set(label(id), vector(x, y, z));
-            }
-            if (!is)
-            {
-                FatalErrorInFunction
-                    << "Cannot read " << f << exit(FatalError);
-            }
-            forAll(force_, i)
-            {
-                force_[i] = byId.lookup(particles_.id[i], force_[i]);
-            }
             backend_->setForces(force_);
-            Info<< "demCloud: fluid forces of the restart read from " << f
-                << endl;
             found = true;
         }
     }

@@ -1,5 +1,4 @@
 #include "GanserDrag.H"
-#include "demCloud.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -12,10 +11,10 @@ Foam::GanserDrag::GanserDrag
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    dragModel(modelType, dict, cloud)
+    dragModel(modelType, dict, context)
 {}
 
 

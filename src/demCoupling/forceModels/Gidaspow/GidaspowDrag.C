@@ -1,5 +1,4 @@
 #include "GidaspowDrag.H"
-#include "demCloud.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -12,10 +11,10 @@ Foam::GidaspowDrag::GidaspowDrag
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    dragModel(modelType, dict, cloud)
+    dragModel(modelType, dict, context)
 {}
 
 

@@ -1,5 +1,4 @@
 #include "HoelzerSommerfeldDrag.H"
-#include "demCloud.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -12,10 +11,10 @@ Foam::HoelzerSommerfeldDrag::HoelzerSommerfeldDrag
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    dragModel(modelType, dict, cloud)
+    dragModel(modelType, dict, context)
 {}
 
 

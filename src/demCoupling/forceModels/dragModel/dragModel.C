@@ -4,9 +4,9 @@ Foam::dragModel::dragModel
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    forceModel(modelType, dict, cloud),
+    forceModel(modelType, dict, context),
     alphaMax_(coeffs_.getOrDefault<scalar>("alphaMax", 0.999))
 {}

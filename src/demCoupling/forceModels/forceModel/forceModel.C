@@ -11,10 +11,10 @@ Foam::forceModel::forceModel
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    cloud_(cloud),
+    context_(context),
     coeffs_(dict.subOrEmptyDict(modelType + "Coeffs"))
 {}
 
@@ -23,7 +23,7 @@ Foam::autoPtr<Foam::forceModel> Foam::forceModel::New
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 {
     Info<< "    force model: " << modelType << endl;
@@ -41,5 +41,5 @@ Foam::autoPtr<Foam::forceModel> Foam::forceModel::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<forceModel>(cstrIter()(modelType, dict, cloud));
+    return autoPtr<forceModel>(cstrIter()(modelType, dict, context));
 }

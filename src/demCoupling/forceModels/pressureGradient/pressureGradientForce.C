@@ -1,6 +1,6 @@
 #include "pressureGradientForce.H"
-#include "demCloud.H"
 #include "addToRunTimeSelectionTable.H"
+#include "fvc.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -13,17 +13,32 @@ Foam::pressureGradientForce::pressureGradientForce
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    forceModel(modelType, dict, cloud)
+    forceModel(modelType, dict, context)
 {}
+
+
+void Foam::pressureGradientForce::cacheFields(const bool store)
+{
+    if (store)
+    {
+        // Gradient of the kinematic pressure
+        const volVectorField gradP(fvc::grad(context_.p()));
+        gradPP_ = context_.sample(gradP);
+    }
+    else
+    {
+        gradPP_.clear();
+    }
+}
 
 
 void Foam::pressureGradientForce::addForce(const particleSample& s, particleForce& f) const
 {
-    const vector F = -s.Vp*s.rho*s.gradP;
-    if (cloud_.formulation() == couplingFormulation::setI)
+    const vector F = -s.Vp*s.rho*gradPP_[s.index];
+    if (context_.formulation() == couplingFormulation::setI)
     {
         f.Fparticle += F;
     }

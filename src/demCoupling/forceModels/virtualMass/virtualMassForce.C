@@ -1,6 +1,6 @@
 #include "virtualMassForce.H"
-#include "demCloud.H"
 #include "addToRunTimeSelectionTable.H"
+#include "fvc.H"
 #include "mathematicalConstants.H"
 
 namespace Foam
@@ -13,18 +13,34 @@ Foam::virtualMassForce::virtualMassForce
 (
     const word& modelType,
     const dictionary& dict,
-    const demCloud& cloud
+    const forceModelContext& context
 )
 :
-    forceModel(modelType, dict, cloud),
+    forceModel(modelType, dict, context),
     Cvm_(coeffs_.getOrDefault<scalar>("Cvm", 0.5))
 {}
+
+
+void Foam::virtualMassForce::cacheFields(const bool store)
+{
+    if (store)
+    {
+        // Material derivative of the fluid velocity
+        const volVectorField& U = context_.U();
+        const volVectorField DUDt(fvc::ddt(U) + (fvc::grad(U) & U));
+        DUDtP_ = context_.sample(DUDt);
+    }
+    else
+    {
+        DUDtP_.clear();
+    }
+}
 
 
 void Foam::virtualMassForce::addForce(const particleSample& s, particleForce& f) const
 {
     const vector dUpdt =
-        s.deltaT > 0 ? (s.Up - cloud_.previousVelocity(s.index))/s.deltaT
+        s.deltaT > 0 ? (s.Up - context_.previousVelocity(s.index))/s.deltaT
                      : vector::zero;
-    f.Fcoupled += Cvm_*s.rho*s.Vp*(s.DUDt - dUpdt);
+    f.Fcoupled += Cvm_*s.rho*s.Vp*(DUDtP_[s.index] - dUpdt);
 }

@@ -1,0 +1,166 @@
+#include "demCloudIO.H"
+#include "demExchangeFields.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+#include "Map.H"
+#include <fstream>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demCloudIO::demCloudIO(const Time& runTime)
+:
+    time_(runTime),
+    summary_(),
+    clock_(),
+    timeDem_(0),
+    timeParticles_(0),
+    timeForces_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demCloudIO::openSummary()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const fileName dir
+    (
+        time_.globalPath()/"postProcessing"/"demCloud"/time_.timeName()
+    );
+    mkDir(dir);
+    summary_.reset(new OFstream(dir/"summary.dat"));
+    summary_()
+        << "# time nParticles nOutside Fx Fy Fz (total fluid force on"
+        << " particles [N]) Pcx Pcy Pcz (coupled force on particles)"
+        << " Sfx Sfy Sfz (exchange source in the fluid) relErr"
+        << " Upx Upy Upz (mean particle velocity) xpx xpy xpz"
+        << " (mean position) alphaMin" << nl;
+    summary_().precision(12);
+}
+
+
+void Foam::demCloudIO::writeSummary
+(
+    const demParticleArrays& particles,
+    const List<vector>& force,
+    const label nOutside,
+    const demExchangeFields& exchange
+)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const label n = particles.size();
+    vector Ftot(Zero), Up(Zero), xp(Zero);
+    forAll(force, i)
+    {
+        Ftot += force[i];
+        Up += particles.velocity[i];
+        xp += particles.position[i];
+    }
+    if (n)
+    {
+        Up /= n;
+        xp /= n;
+    }
+    const vector& Pp = exchange.particleMomentum();
+    const vector& Pf = exchange.fluidMomentum();
+
+    OFstream& os = summary_();
+    os  << time_.value() << ' ' << n << ' ' << nOutside << ' '
+        << Ftot.x() << ' ' << Ftot.y() << ' ' << Ftot.z() << ' '
+        << Pp.x() << ' ' << Pp.y() << ' ' << Pp.z() << ' '
+        << Pf.x() << ' ' << Pf.y() << ' ' << Pf.z() << ' '
+        << exchange.balanceError() << ' '
+        << Up.x() << ' ' << Up.y() << ' ' << Up.z() << ' '
+        << xp.x() << ' ' << xp.y() << ' ' << xp.z() << ' '
+        << min(exchange.voidfraction().primitiveField()) << nl;
+    os.flush();
+}
+
+
+Foam::fileName Foam::demCloudIO::fluidForcesFile() const
+{
+    return time_.timePath()/"polyDEM"/"fluidForces";
+}
+
+
+void Foam::demCloudIO::writeFluidForces
+(
+    const List<label>& id,
+    const List<vector>& force
+) const
+{
+    if (!Pstream::master() || !time_.writeTime())
+    {
+        return;
+    }
+    // The forces the back end holds for its next advance: read back on
+    // restart so that a restarted run continues as if unbroken
+    const fileName dir(time_.timePath()/"polyDEM");
+    mkDir(dir);
+    OFstream os(dir/"fluidForces");
+    os.precision(17);
+    os  << "// demCloud: fluid force [N] per particle id, for restart"
+        << nl << force.size() << nl;
+    forAll(force, i)
+    {
+        os  << id[i] << ' ' << force[i].x() << ' '
+            << force[i].y() << ' ' << force[i].z() << nl;
+    }
+}
+
+
+bool Foam::demCloudIO::readFluidForces
+(
+    const List<label>& id,
+    List<vector>& force
+) const
+{
+    const fileName f(fluidForcesFile());
+    if (!isFile(f))
+    {
+        return false;
+    }
+    std::ifstream is(f);
+    std::string comment;
+    std::getline(is, comment);
+    long n = 0;
+    is >> n;
+    Map<vector> byId;
+    for (long k = 0; k < n; ++k)
+    {
+        long i;
+        double x, y, z;
+        is >> i >> x >> y >> z;
+        byId.set(label(i), vector(x, y, z));
+    }
+    if (!is)
+    {
+        FatalErrorInFunction
+            << "Cannot read " << f << exit(FatalError);
+    }
+    forAll(force, i)
+    {
+        force[i] = byId.lookup(id[i], force[i]);
+    }
+    Info<< "demCloud: fluid forces of the restart read from " << f << endl;
+    return true;
+}
+
+
+void Foam::demCloudIO::addTimes
+(
+    const scalar dem,
+    const scalar particles,
+    const scalar forces
+)
+{
+    timeDem_ += dem;
+    timeParticles_ += particles;
+    timeForces_ += forces;
+}
