@@ -1,7 +1,7 @@
 #include "polyDEMBackend.H"
 #include "addToRunTimeSelectionTable.H"
 #include "polyDEM/Error.hpp"
-#include "polyDEM/Quaternion.hpp"
+#include "polyDEMConversions.H"
 
 namespace Foam
 {
@@ -56,7 +56,7 @@ Foam::scalar Foam::polyDEMBackend::timeStep() const
 
 Foam::label Foam::polyDEMBackend::stepsPerFluidStep() const
 {
-    return label(std::llround(runTime_.deltaTValue()/timeStep()));
+    return dem_->stepsPerDeltaT();
 }
 
 
@@ -116,7 +116,7 @@ bool Foam::polyDEMBackend::typePolyhedron(label type, demShape& shape) const
     shape.vertices.setSize(s.nVertices());
     forAll(shape.vertices, i)
     {
-        shape.vertices[i] = demPropertiesReader::toVector(s.vertices[i]);
+        shape.vertices[i] = polyDEMConversions::toVector(s.vertices[i]);
     }
     const label nf = s.nFaces();
     shape.faces.setSize(nf);
@@ -130,7 +130,7 @@ bool Foam::polyDEMBackend::typePolyhedron(label type, demShape& shape) const
         {
             fc[k] = s.faceVertex[s.faceStart[f] + k];
         }
-        shape.normals[f] = demPropertiesReader::toVector(s.faceNormals[f]);
+        shape.normals[f] = polyDEMConversions::toVector(s.faceNormals[f]);
         shape.offsets[f] = s.faceOffsets[f];
     }
     shape.volume = s.volume;
@@ -149,19 +149,10 @@ void Foam::polyDEMBackend::particles(demParticleArrays& p) const
         p.type[i] = s.type[i];
         p.radius[i] = s.radius[i];
         p.mass[i] = s.mass[i];
-        p.position[i] = demPropertiesReader::toVector(s.position[i]);
-        p.velocity[i] = demPropertiesReader::toVector(s.velocity[i]);
-        p.omega[i] = demPropertiesReader::toVector(s.omega[i]);
-        // Rows of tensor(e0, e1, e2) are the body axes in world coordinates
-        // (world -> body); its transpose turns body into world
-        const polydem::Quaternion& q = s.orientation[i];
-        p.orientation[i] =
-            tensor
-            (
-                demPropertiesReader::toVector(polydem::rotate(q, {1, 0, 0})),
-                demPropertiesReader::toVector(polydem::rotate(q, {0, 1, 0})),
-                demPropertiesReader::toVector(polydem::rotate(q, {0, 0, 1}))
-            ).T();
+        p.position[i] = polyDEMConversions::toVector(s.position[i]);
+        p.velocity[i] = polyDEMConversions::toVector(s.velocity[i]);
+        p.omega[i] = polyDEMConversions::toVector(s.omega[i]);
+        p.orientation[i] = polyDEMConversions::orientationTensor(s.orientation[i]);
     }
 }
 
@@ -171,7 +162,7 @@ void Foam::polyDEMBackend::setForces(const List<vector>& F)
     std::vector<polydem::Vec3> force(F.size());
     forAll(F, i)
     {
-        force[i] = demPropertiesReader::toVec3(F[i]);
+        force[i] = polyDEMConversions::toVec3(F[i]);
     }
     try
     {

@@ -11,72 +11,12 @@
 #include "polyDEM/Engine.hpp"
 #include "polyDEM/Quaternion.hpp"
 #include "polyDEM/Error.hpp"
-#include "FixedList.H"
+#include "polyDEMConversions.H"
 
 namespace
 {
-Foam::vector toV(const polydem::Vec3& v)
-{
-    return Foam::vector(v.x, v.y, v.z);
-}
-polydem::Vec3 toP(const Foam::vector& v)
-{
-    return polydem::Vec3{v.x(), v.y(), v.z()};
-}
-
-//- Unit quaternion (w x y z), w >= 0, of the body-to-world rotation whose
-//  transpose is worldToBody (rows: the body axes in world coordinates);
-//  Shepperd's method (the largest of 4w^2, 4x^2, 4y^2, 4z^2 first)
-Foam::FixedList<Foam::scalar, 4> orientationQuaternion
-(
-    const Foam::tensor& worldToBody
-)
-{
-    using namespace Foam;
-    const tensor R(worldToBody.T());
-    const scalar tr = R.xx() + R.yy() + R.zz();
-    scalar w, x, y, z;
-    if (tr >= R.xx() && tr >= R.yy() && tr >= R.zz())
-    {
-        const scalar s = 2*std::sqrt(max(1 + tr, scalar(0)));
-        w = 0.25*s;
-        x = (R.zy() - R.yz())/s;
-        y = (R.xz() - R.zx())/s;
-        z = (R.yx() - R.xy())/s;
-    }
-    else if (R.xx() >= R.yy() && R.xx() >= R.zz())
-    {
-        const scalar s = 2*std::sqrt(max(1 + R.xx() - R.yy() - R.zz(), scalar(0)));
-        w = (R.zy() - R.yz())/s;
-        x = 0.25*s;
-        y = (R.xy() + R.yx())/s;
-        z = (R.xz() + R.zx())/s;
-    }
-    else if (R.yy() >= R.zz())
-    {
-        const scalar s = 2*std::sqrt(max(1 + R.yy() - R.xx() - R.zz(), scalar(0)));
-        w = (R.xz() - R.zx())/s;
-        x = (R.xy() + R.yx())/s;
-        y = 0.25*s;
-        z = (R.yz() + R.zy())/s;
-    }
-    else
-    {
-        const scalar s = 2*std::sqrt(max(1 + R.zz() - R.xx() - R.yy(), scalar(0)));
-        w = (R.yx() - R.xy())/s;
-        x = (R.xz() + R.zx())/s;
-        y = (R.yz() + R.zy())/s;
-        z = 0.25*s;
-    }
-    const scalar n = std::sqrt(w*w + x*x + y*y + z*z);
-    const scalar sign = w < 0 ? -1 : 1;
-    FixedList<scalar, 4> q;
-    q[0] = sign*w/n;
-    q[1] = sign*x/n;
-    q[2] = sign*y/n;
-    q[3] = sign*z/n;
-    return q;
-}
+using Foam::polyDEMConversions::toVec3;
+using Foam::polyDEMConversions::toVector;
 }
 
 
@@ -116,17 +56,13 @@ void Foam::ibParticles::readDEM()
     {
         ibBody& b = bodies_[i];
         b.id = label(s.id[i]);
-        b.position = toV(s.position[i]);
-        b.velocity = toV(s.velocity[i]);
-        b.omega = toV(s.omega[i]);
+        b.position = toVector(s.position[i]);
+        b.velocity = toVector(s.velocity[i]);
+        b.omega = toVector(s.omega[i]);
         b.radius = s.radius[i];
         b.mass = s.mass[i];
         // The orientation (spheres too: written to forces.dat)
-        const polydem::Quaternion& q = s.orientation[i];
-        const vector e0 = toV(polydem::rotate(q, polydem::Vec3{1, 0, 0}));
-        const vector e1 = toV(polydem::rotate(q, polydem::Vec3{0, 1, 0}));
-        const vector e2 = toV(polydem::rotate(q, polydem::Vec3{0, 0, 1}));
-        b.worldToBody = tensor(e0, e1, e2);
+        b.orientation = polyDEMConversions::orientationTensor(s.orientation[i]);
         const polydem::ParticleType& type = cfg.types[s.type[i]];
         if (type.shape == polydem::ShapeKind::polyhedron)
         {
@@ -138,7 +74,7 @@ void Foam::ibParticles::readDEM()
             b.faceOffsets.setSize(nf);
             for (label f = 0; f < nf; ++f)
             {
-                b.faceNormals[f] = toV(shape.faceNormals[f]);
+                b.faceNormals[f] = toVector(shape.faceNormals[f]);
                 b.faceOffsets[f] = shape.faceOffsets[f];
             }
         }
@@ -216,7 +152,7 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
                 (
                     new demSimulation(mesh.time(), *demProperties_, true)
                 );
-                g_ = toV(dem_->input().config().gravity);
+                g_ = toVector(dem_->input().config().gravity);
             }
             catch (const polydem::Error& err)
             {
@@ -302,8 +238,8 @@ void Foam::ibParticles::evolve
         {
             Fi += lubForce_[i];
         }
-        force[i] = toP(Fi);
-        torque[i] = toP(Ti);
+        force[i] = toVec3(Fi);
+        torque[i] = toVec3(Ti);
         previousVelocity_[i] = b.velocity;
     }
 
@@ -366,8 +302,9 @@ void Foam::ibParticles::writeForces
             << lubForce_[i].z() << ' '
             << b.omega.x() << ' ' << b.omega.y() << ' ' << b.omega.z();
         // Orientation: body-to-world rotation as a unit quaternion, w >= 0
-        const FixedList<scalar, 4> q = orientationQuaternion(b.worldToBody);
-        os  << ' ' << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << nl;
+        const polydem::Quaternion q =
+            polyDEMConversions::quaternionOf(b.orientation);
+        os  << ' ' << q.w << ' ' << q.x << ' ' << q.y << ' ' << q.z << nl;
     }
     os.flush();
 }

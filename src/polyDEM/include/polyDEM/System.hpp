@@ -27,6 +27,11 @@ public:
     //  mass and inertia from their type's material density and their radius.
     void initialise(Snapshot state);
 
+    //- Add particles to the running engine (an insertion), after checking the
+    //  time step against their contact-stability limit; what names them in
+    //  the error (e.g. "the particles of insertion 'release'")
+    void addParticles(const ParticleState& added, const std::string& what = "these particles");
+
     void advance(std::int64_t nSteps) { engine_->advance(nSteps); }
 
     const SimulationConfig& config() const { return config_; }
@@ -54,10 +59,18 @@ public:
     //- The material pair tables the back ends use (law coefficients)
     static void checkConfig(const SimulationConfig& config);
 
+    //- The time step alone (positive and finite; part of checkConfig), for
+    //  readers that use it before the System is made
+    static void checkTimeStep(const SimulationConfig& config);
+
     //- Load a back end by name from the library path
     static std::unique_ptr<Engine> loadBackend(const std::string& device, const std::string& source);
 
 private:
+    //- Throw polydem::Error (entry timeStep) when the time step is above the
+    //  contact-stability limit of particles
+    void checkStability(const ParticleState& particles, const std::string& what) const;
+
     SimulationConfig config_;
     void* library_ = nullptr;
     std::unique_ptr<Engine> engine_;

@@ -57,13 +57,19 @@ double largestFaceArea(const ConvexShape& s)
 } // namespace
 
 
+void System::checkTimeStep(const SimulationConfig& c)
+{
+    if (!(c.timeStep > 0) || !std::isfinite(c.timeStep))
+    {
+        throw Error("time step must be positive, got " + str(c.timeStep), c.source, "timeStep");
+    }
+}
+
+
 void System::checkConfig(const SimulationConfig& c)
 {
     const std::string& f = c.source;
-    if (!(c.timeStep > 0) || !std::isfinite(c.timeStep))
-    {
-        throw Error("time step must be positive, got " + str(c.timeStep), f, "timeStep");
-    }
+    checkTimeStep(c);
     if (c.materials.empty())
     {
         throw Error("at least one material is needed", f, "materials");
@@ -289,20 +295,37 @@ void System::initialise(Snapshot state)
                         config_.source, "particleTypes");
         }
     }
-    const double dtMax = criticalTimeStep(state.particles);
+    checkStability(state.particles, "these particles");
+    engine_->initialise(config_, state);
+}
+
+
+void System::checkStability(const ParticleState& particles, const std::string& what) const
+{
+    const double dtMax = criticalTimeStep(particles);
     if (config_.timeStep > dtMax)
     {
         throw Error
         (
             "time step " + str(config_.timeStep) + " s is above the contact-stability limit "
-            + str(dtMax) + " s for these particles ("
+            + str(dtMax) + " s for " + what + " ("
             + (config_.contact.law == ContactLaw::hertzMindlin
                ? "20 % of the Rayleigh time" : "1/10 of the contact duration")
             + "): reduce timeStep, or soften the material",
             config_.source, "timeStep"
         );
     }
-    engine_->initialise(config_, state);
+}
+
+
+void System::addParticles(const ParticleState& added, const std::string& what)
+{
+    if (added.size() == 0)
+    {
+        return;
+    }
+    checkStability(added, what);
+    engine_->addParticles(added);
 }
 
 } // namespace polydem

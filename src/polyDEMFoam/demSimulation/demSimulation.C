@@ -12,13 +12,12 @@ Description
 #include "IOmanip.H"
 #include "mathematicalConstants.H"
 
+#include "polyDEM/Insertion.hpp"
 #include "polyDEM/MeshQueries.hpp"
-#include "polyDEM/RandomFill.hpp"
 #include "polyDEM/StateIO.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <limits>
 #include <unordered_map>
 
@@ -26,35 +25,6 @@ Description
 
 namespace Foam
 {
-
-//- Append the particles of b to a
-static void appendParticles(polydem::ParticleState& a, const polydem::ParticleState& b)
-{
-    auto cat = [](auto& x, const auto& y) { x.insert(x.end(), y.begin(), y.end()); };
-    cat(a.id, b.id);
-    cat(a.type, b.type);
-    cat(a.radius, b.radius);
-    cat(a.mass, b.mass);
-    cat(a.inertia, b.inertia);
-    cat(a.position, b.position);
-    cat(a.orientation, b.orientation);
-    cat(a.velocity, b.velocity);
-    cat(a.omega, b.omega);
-    cat(a.force, b.force);
-    cat(a.torque, b.torque);
-}
-
-
-static int64_t nextId(const polydem::ParticleState& p)
-{
-    int64_t next = 0;
-    for (const int64_t id : p.id)
-    {
-        next = std::max(next, id + 1);
-    }
-    return next;
-}
-
 
 //- Wall-clock duration as h:mm:ss
 static std::string hms(double s)
@@ -180,25 +150,33 @@ polydem::ParticleState Foam::demSimulation::insert
 ) const
 {
     const auto& ins = input_.insertions()[k];
+    const auto& ut = input_.userTypes()[ins.type];
+    const polydem::InsertionTypes types =
+        demInsertionsReader::insertionTypes(ut);
     if (ins.kind == demPropertiesReader::insertion::method::list)
     {
-        return insertList(ins, firstId);
-    }
-    std::vector<polydem::SphereSeed> existing(obstacles.size());
-    for (size_t i = 0; i < obstacles.size(); ++i)
-    {
-        existing[i].position = obstacles.position[i];
-        existing[i].radius = obstacles.radius[i];
+        polydem::ParticleState p =
+            polydem::insertList(*system_, types, ins.particles, firstId);
+        Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
+            << (ut.polyhedron ? " polyhedra" : " spheres") << " (list)" << endl;
+        return p;
     }
 
-    std::vector<polydem::SphereSeed> seeds;
+    polydem::RandomFillInsertion fill;
+    fill.types = types;
+    fill.region = ins.region;
+    fill.sizes = ins.sizes;
+    fill.number = size_t(ins.number);
+    fill.seed = uint64_t(ins.seed);
+    fill.gap = ins.gap;
+    fill.velocity = ins.velocity;
+    fill.fixedOrientation = ins.fixedOrientation;
+    fill.orientation = ins.orientation;
+
+    polydem::InsertedParticles added;
     try
     {
-        seeds = polydem::randomFill
-        (
-            ins.region, ins.sizes, size_t(ins.number), uint64_t(ins.seed),
-            ins.gap, existing
-        );
+        added = polydem::insertRandomFill(*system_, fill, obstacles, firstId);
     }
     catch (const polydem::Error& err)
     {
@@ -208,136 +186,11 @@ polydem::ParticleState Foam::demSimulation::insert
             "insertion/" + ins.name + "/number"
         );
     }
-
-    const auto& ut = input_.userTypes()[ins.type];
-    const auto& config = input_.config();
-    std::vector<polydem::Vec3> positions(seeds.size());
-    std::vector<double> radii(seeds.size());
-    std::vector<int> types(seeds.size(), ut.firstType);
-    for (size_t i = 0; i < seeds.size(); ++i)
-    {
-        positions[i] = seeds[i].position;
-        radii[i] = seeds[i].radius;
-    }
-
-    // Polyhedra: the shape whose bounding sphere the seed is (a random one
-    // among shapes of equal bounding radius) and a uniformly random
-    // orientation (Shoemake 1992), from the insertion's seed
-    std::vector<polydem::Quaternion> q(seeds.size());
-    if (ut.polyhedron)
-    {
-        std::mt19937_64 rng(uint64_t(ins.seed)*0x9E3779B97F4A7C15ULL + 12345u);
-        auto uniform = [&rng]() { return double(rng() >> 11)*0x1.0p-53; };
-        for (size_t i = 0; i < seeds.size(); ++i)
-        {
-            double best = GREAT;
-            std::vector<int> ties;
-            for (int k = 0; k < ut.nTypes; ++k)
-            {
-                const double dr =
-                    std::abs(config.types[ut.firstType + k].radius - radii[i]);
-                if (dr < best - 1e-12*radii[i])
-                {
-                    best = dr;
-                    ties.assign(1, ut.firstType + k);
-                }
-                else if (dr <= best + 1e-12*radii[i])
-                {
-                    ties.push_back(ut.firstType + k);
-                }
-            }
-            types[i] = ties[std::min(ties.size() - 1, size_t(uniform()*ties.size()))];
-
-            const double u1 = uniform(), u2 = uniform(), u3 = uniform();
-            const double twoPi = constant::mathematical::twoPi;
-            const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-            q[i] = polydem::normalised
-            (
-                polydem::Quaternion
-                {
-                    b*std::cos(twoPi*u3), a*std::sin(twoPi*u2),
-                    a*std::cos(twoPi*u2), b*std::sin(twoPi*u3)
-                }
-            );
-            if (ins.fixedOrientation)
-            {
-                q[i] = ins.orientation;
-            }
-        }
-    }
-
-    polydem::ParticleState p =
-        system_->makeSpheres(ut.firstType, positions, radii, firstId);
-    double volume = 0;
-    for (size_t i = 0; i < p.size(); ++i)
-    {
-        p.velocity[i] = ins.velocity;
-        if (ut.polyhedron)
-        {
-            const auto& type = config.types[types[i]];
-            const auto& shape = config.shapes[type.shapeIndex];
-            const double rho = config.materials[type.material].density;
-            p.type[i] = types[i];
-            p.orientation[i] = q[i];
-            p.mass[i] = rho*shape.volume;
-            p.inertia[i] = rho*shape.inertiaPerDensity;
-            p.radius[i] = shape.boundingRadius;
-            volume += shape.volume;
-        }
-        else
-        {
-            volume += 4.0/3.0*constant::mathematical::pi*std::pow(radii[i], 3);
-        }
-    }
-    Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
+    Info<< "DEM insertion '" << ins.name << "': " << label(added.particles.size())
         << (ut.polyhedron ? " polyhedra" : " spheres")
         << ", solid fraction of the region "
-        << volume/std::max(ins.region.volume(), VSMALL) << endl;
-    return p;
-}
-
-
-polydem::ParticleState Foam::demSimulation::insertList
-(
-    const demPropertiesReader::insertion& ins,
-    int64_t firstId
-) const
-{
-    const auto& ut = input_.userTypes()[ins.type];
-    const auto& config = input_.config();
-    const size_t n = ins.particles.size();
-    std::vector<polydem::Vec3> positions(n);
-    std::vector<double> radii(n);
-    for (size_t i = 0; i < n; ++i)
-    {
-        positions[i] = ins.particles[i].position;
-        radii[i] = ins.particles[i].radius;
-    }
-
-    // The same path as randomFill: spheres of the type, then the shape,
-    // mass properties and the given orientation for polyhedra
-    polydem::ParticleState p =
-        system_->makeSpheres(ut.firstType, positions, radii, firstId);
-    for (size_t i = 0; i < p.size(); ++i)
-    {
-        const auto& lp = ins.particles[i];
-        p.velocity[i] = lp.velocity;
-        p.omega[i] = lp.omega;
-        p.orientation[i] = lp.orientation;
-        if (ut.polyhedron)
-        {
-            const auto& type = config.types[lp.type];
-            const auto& shape = config.shapes[type.shapeIndex];
-            const double rho = config.materials[type.material].density;
-            p.type[i] = lp.type;
-            p.mass[i] = rho*shape.volume;
-            p.inertia[i] = rho*shape.inertiaPerDensity;
-            p.radius[i] = shape.boundingRadius;
-        }
-    }
-    Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
-        << (ut.polyhedron ? " polyhedra" : " spheres") << " (list)" << endl;
-    return p;
+        << added.volume/std::max(ins.region.volume(), VSMALL) << endl;
+    return added.particles;
 }
 
 
@@ -357,24 +210,11 @@ void Foam::demSimulation::insertDue()
         }
         insertionDone_[k] = true;
         const polydem::ParticleState present = system_->engine().particles();
-        polydem::ParticleState added = insert(k, present, nextId(present));
-        if (added.size() == 0)
-        {
-            continue;
-        }
-        const double dtMax = system_->criticalTimeStep(added);
-        if (input_.config().timeStep > dtMax)
-        {
-            throw polydem::Error
-            (
-                "time step " + std::to_string(input_.config().timeStep)
-              + " s is above the contact-stability limit "
-              + std::to_string(dtMax) + " s of the particles of insertion '"
-              + ins.name + "'",
-                input_.dict().name(), "timeStep"
-            );
-        }
-        system_->engine().addParticles(added);
+        system_->addParticles
+        (
+            insert(k, present, polydem::nextParticleId(present)),
+            "the particles of insertion '" + ins.name + "'"
+        );
     }
 }
 
@@ -633,10 +473,10 @@ Foam::demSimulation::demSimulation
             if (input_.insertions()[k].time <= runTime_.value() + 1e-9*runTime_.deltaTValue())
             {
                 insertionDone_[k] = true;
-                appendParticles
+                polydem::appendParticles
                 (
                     state.particles,
-                    insert(k, state.particles, nextId(state.particles))
+                    insert(k, state.particles, polydem::nextParticleId(state.particles))
                 );
             }
         }

@@ -1,0 +1,102 @@
+// polyDEM: the particles of an insertion, ready for System::addParticles or
+// an initial Snapshot.
+//
+// Random fill: spheres placed by randomFill (random sequential addition) in
+// a region, clear of the particles present (their bounding spheres). For a
+// polyhedral type every seed becomes the shape whose bounding sphere it is
+// (a random one among shapes of equal bounding radius) with a uniformly
+// random orientation (Shoemake 1992, "Uniform random rotations"), both drawn
+// from the insertion's seed, or one given orientation for all.
+// List: particles at given positions, orientations, velocities and angular
+// velocities, without overlap check.
+// Mass and inertia come from the type's material density and the sphere
+// radius or the convex shape (System::makeSpheres). Deterministic for a seed.
+#pragma once
+
+#include "polyDEM/ParticleState.hpp"
+#include "polyDEM/Quaternion.hpp"
+#include "polyDEM/RandomFill.hpp"
+#include "polyDEM/Vec3.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace polydem
+{
+
+class System;
+
+//- The engine particle types one insertion draws from: a sphere type, or
+//  the shapes of a polyhedral type, engine types [firstType, firstType + nTypes)
+struct InsertionTypes
+{
+    int firstType = 0;
+    int nTypes = 1;
+    bool polyhedron = false;
+};
+
+//- A random fill of a region
+struct RandomFillInsertion
+{
+    InsertionTypes types;
+    FillRegion region;
+    SizeDistribution sizes;
+    std::size_t number = 0;
+    std::uint64_t seed = 1;
+    //- Minimum surface gap between inserted spheres [m]
+    double gap = 0;
+    Vec3 velocity;
+    //- Polyhedra: all with orientation (instead of random ones)
+    bool fixedOrientation = false;
+    Quaternion orientation;
+};
+
+//- One particle of a list insertion
+struct ListedParticle
+{
+    Vec3 position;
+    //- Body to world rotation
+    Quaternion orientation;
+    Vec3 velocity;
+    //- Angular velocity (world frame) [rad/s]
+    Vec3 omega;
+    //- Engine particle type (one shape of the insertion's types)
+    int type = 0;
+    //- Sphere radius; polyhedra: the shape's bounding radius
+    double radius = 0;
+};
+
+struct InsertedParticles
+{
+    ParticleState particles;
+    //- Solid volume of the particles [m3]
+    double volume = 0;
+};
+
+//- The particles of a random fill, ids from firstId, clear of obstacles.
+//  Throws polydem::Error (from randomFill) when the region is too full.
+InsertedParticles insertRandomFill
+(
+    const System& system,
+    const RandomFillInsertion& insertion,
+    const ParticleState& obstacles,
+    std::int64_t firstId
+);
+
+//- The particles of a list, ids from firstId
+ParticleState insertList
+(
+    const System& system,
+    const InsertionTypes& types,
+    const std::vector<ListedParticle>& particles,
+    std::int64_t firstId
+);
+
+//- One past the largest id of p (0 when empty)
+std::int64_t nextParticleId(const ParticleState& p);
+
+//- Append the particles of b to a
+void appendParticles(ParticleState& a, const ParticleState& b);
+
+} // namespace polydem

@@ -1,0 +1,461 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    demProperties 'insertion' entries (see demInsertionsReader.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "demInsertionsReader.H"
+#include "demPropertiesErrors.H"
+#include "demSurfaceReader.H"
+#include "polyDEMConversions.H"
+#include "IOstreams.H"
+#include "Tuple2.H"
+#include "vector.H"
+
+using Foam::polyDEMConversions::toVec3;
+using Foam::polyDEMConversions::orientationFromAngles;
+
+// * * * * * * * * * * * * Private Static Functions  * * * * * * * * * * * * //
+
+int Foam::demInsertionsReader::typeIndex
+(
+    const std::vector<demShapesReader::userType>& userTypes,
+    const dictionary& d,
+    const word& key
+)
+{
+    const word name(d.get<word>(key));
+    for (size_t i = 0; i < userTypes.size(); ++i)
+    {
+        if (userTypes[i].name == name)
+        {
+            return int(i);
+        }
+    }
+    wordList valid;
+    for (const auto& t : userTypes)
+    {
+        valid.append(t.name);
+    }
+    FatalIOErrorInFunction(d)
+        << "Unknown particle type '" << name << "' in entry '" << key
+        << "' of " << d.name() << nl
+        << "Valid particle types (from 'particleTypes'): " << valid << nl
+        << exit(FatalIOError);
+    return -1;
+}
+
+
+polydem::SizeDistribution Foam::demInsertionsReader::readDistribution
+(
+    const dictionary& dict,
+    const dictionary& id,
+    const polydem::ParticleType& type
+)
+{
+    polydem::SizeDistribution s;
+    const dictionary* dd = id.findDict("diameterDistribution");
+    if (!dd)
+    {
+        s = polydem::SizeDistribution::fixedDiameter(2*type.radius);
+    }
+    else
+    {
+        static const wordList kinds({"fixed", "uniform", "normal", "discrete"});
+        const label kind = demPropertiesErrors::selectName(*dd, "type", kinds, "diameter distribution");
+        switch (kind)
+        {
+            case 0:
+                s = polydem::SizeDistribution::fixedDiameter
+                (
+                    dd->getOrDefault<scalar>("diameter", 2*type.radius)
+                );
+                break;
+            case 1:
+                s = polydem::SizeDistribution::uniform
+                (
+                    dd->get<scalar>("min"), dd->get<scalar>("max")
+                );
+                break;
+            case 2:
+                s = polydem::SizeDistribution::normal
+                (
+                    dd->get<scalar>("mean"),
+                    dd->get<scalar>("standardDeviation"),
+                    dd->get<scalar>("min"),
+                    dd->get<scalar>("max")
+                );
+                break;
+            default:
+            {
+                const List<Tuple2<scalar, scalar>> f
+                (
+                    dd->get<List<Tuple2<scalar, scalar>>>("fractions")
+                );
+                std::vector<std::pair<double, double>> fr;
+                for (const auto& t : f)
+                {
+                    fr.emplace_back(t.first(), t.second());
+                }
+                s = polydem::SizeDistribution::discrete(fr);
+                break;
+            }
+        }
+    }
+    s.source = dict.name();
+    try
+    {
+        s.validate();
+    }
+    catch (const polydem::Error& err)
+    {
+        // The engine names the distribution's own entry: prefix its path
+        const std::string sub = err.entry() == "sd" ? "standardDeviation" : err.entry();
+        demPropertiesErrors::reportError
+        (
+            polydem::Error
+            (
+                err.message(), dict.name(),
+                "insertion/" + std::string(id.dictName())
+              + "/diameterDistribution" + (sub.empty() ? "" : "/" + sub)
+            ),
+            dict
+        );
+    }
+    return s;
+}
+
+
+polydem::FillRegion Foam::demInsertionsReader::readRegion
+(
+    const dictionary& dict,
+    const dictionary& id
+)
+{
+    const dictionary& rd = id.subDict("region");
+    static const wordList kinds({"box", "stl"});
+    const label kind = demPropertiesErrors::selectName(rd, "type", kinds, "region type");
+    if (kind == 0)
+    {
+        return polydem::FillRegion::box
+        (
+            toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+        );
+    }
+
+    const std::string path =
+        "insertion/" + std::string(id.dictName()) + "/region/file";
+    polydem::TriangleMesh mesh = demSurfaceReader::read(dict, rd, "file", path);
+    try
+    {
+        if (rd.found("min", keyType::LITERAL) || rd.found("max", keyType::LITERAL))
+        {
+            return polydem::FillRegion::insideMesh
+            (
+                std::move(mesh),
+                toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+            );
+        }
+        return polydem::FillRegion::insideMesh(std::move(mesh));
+    }
+    catch (const polydem::Error& err)
+    {
+        demPropertiesErrors::reportError(polydem::Error(err.message(), err.file(), path), dict);
+    }
+    return polydem::FillRegion();
+}
+
+
+void Foam::demInsertionsReader::readParticleList
+(
+    const dictionary& dict,
+    const polydem::SimulationConfig& config,
+    const std::vector<demShapesReader::userType>& userTypes,
+    const dictionary& id,
+    insertion& ins
+)
+{
+    const std::string base = "insertion/" + ins.name + "/particles";
+    const char* listSyntax =
+        "a list of particle dictionaries: particles ( { position (x y z);"
+        " orientation (a b c); velocity (u v w); omega (wx wy wz); } ... );"
+        " orientation, velocity, omega optional";
+
+    for (const word key : {"number", "region", "seed", "gap",
+        "diameterDistribution", "orientation"})
+    {
+        if (id.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << ins.name << "/" << key
+                << "' is not used by an insertion of type list (the particles"
+                << " are given one by one in 'particles'); remove it from "
+                << dict.name() << nl << exit(FatalIOError);
+        }
+    }
+
+    const entry* pe = id.findEntry("particles", keyType::LITERAL);
+    if (!pe || pe->isDict())
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "' "
+            << (pe ? "must be a list, not a dictionary," : "is missing")
+            << " in " << dict.name() << nl
+            << "Expected " << listSyntax << nl << exit(FatalIOError);
+    }
+
+    List<dictionary> list;
+    demPropertiesErrors::readOrFail
+    (
+        dict, id, base, listSyntax,
+        [&]()
+        {
+            ITstream& is = pe->stream();
+            is >> list;
+            if (is.nRemainingTokens())
+            {
+                FatalIOErrorInFunction(is)
+                    << is.nRemainingTokens() << " excess tokens after the"
+                    << " list" << exit(FatalIOError);
+            }
+        }
+    );
+    if (list.empty())
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "' is an empty list in "
+            << dict.name() << nl << "Expected " << listSyntax << nl
+            << exit(FatalIOError);
+    }
+
+    // The insertion's velocity: default of its particles
+    vector listVelocity(Zero);
+    demPropertiesErrors::readOrFail
+    (
+        dict, id, "insertion/" + ins.name + "/velocity",
+        "a velocity (u v w) [m/s]",
+        [&]() { listVelocity = id.getOrDefault<vector>("velocity", Zero); }
+    );
+    ins.velocity = toVec3(listVelocity);
+
+    const demShapesReader::userType& ut = userTypes[ins.type];
+    static const wordList valid
+    ({
+        "position", "orientation", "velocity", "omega", "shape", "diameter"
+    });
+    forAll(list, k)
+    {
+        const dictionary& pd = list[k];
+        const std::string path = base + "[" + std::to_string(k) + "]";
+        for (const entry& pdE : pd)
+        {
+            if (!valid.found(pdE.keyword()))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Unknown keyword '" << pdE.keyword() << "' in entry '"
+                    << path.c_str() << "' of " << dict.name() << nl
+                    << "Valid keywords: " << valid << nl << exit(FatalIOError);
+            }
+        }
+        if (!pd.found("position", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry '" << path.c_str() << "/position' is missing in "
+                << dict.name() << nl << "Expected " << listSyntax << nl
+                << exit(FatalIOError);
+        }
+
+        auto readVector = [&]
+        (
+            const word& key,
+            const char* what,
+            const vector& deflt = Zero
+        )
+        {
+            vector v(deflt);
+            if (pd.found(key, keyType::LITERAL))
+            {
+                demPropertiesErrors::readOrFail
+                (
+                    dict, id, path + "/" + key, what,
+                    [&]() { v = pd.get<vector>(key); }
+                );
+            }
+            return v;
+        };
+
+        listParticle p;
+        p.position = toVec3(readVector("position", "a position (x y z) [m]"));
+        p.orientation = orientationFromAngles
+        (
+            readVector
+            (
+                "orientation",
+                "an orientation (a b c) [degrees]: rotations about the world"
+                " x, then y, then z axes"
+            )
+        );
+        p.velocity = toVec3
+        (
+            readVector("velocity", "a velocity (u v w) [m/s]", listVelocity)
+        );
+        p.omega = toVec3
+        (
+            readVector("omega", "an angular velocity (wx wy wz) [rad/s]")
+        );
+
+        label shape = 0;
+        if (pd.found("shape", keyType::LITERAL))
+        {
+            demPropertiesErrors::readOrFail
+            (
+                dict, id, path + "/shape", "a shape index (label)",
+                [&]() { shape = pd.get<label>("shape"); }
+            );
+            if (shape < 0 || shape >= ut.nTypes)
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/shape' is " << shape
+                    << ": particle type '" << ut.name << "' has " << ut.nTypes
+                    << " shape(s), indices 0.." << ut.nTypes - 1 << ", in "
+                    << dict.name() << nl << exit(FatalIOError);
+            }
+        }
+        p.type = ut.firstType + int(shape);
+        p.radius = config.types[p.type].radius;
+        if (pd.found("diameter", keyType::LITERAL))
+        {
+            if (ut.polyhedron)
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/diameter': particle type '"
+                    << ut.name << "' is a polyhedron, whose size is set by its"
+                    << " geometry; remove the entry from " << dict.name()
+                    << nl << exit(FatalIOError);
+            }
+            scalar d = 0;
+            demPropertiesErrors::readOrFail
+            (
+                dict, id, path + "/diameter", "a diameter [m]",
+                [&]() { d = pd.get<scalar>("diameter"); }
+            );
+            if (!(d > 0))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry '" << path.c_str() << "/diameter' must be"
+                    << " positive in " << dict.name() << nl
+                    << exit(FatalIOError);
+            }
+            p.radius = 0.5*d;
+        }
+        ins.particles.push_back(p);
+    }
+    ins.number = label(ins.particles.size());
+}
+
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+std::vector<Foam::demInsertionsReader::insertion>
+Foam::demInsertionsReader::read
+(
+    const dictionary& dict,
+    const polydem::SimulationConfig& config,
+    const std::vector<demShapesReader::userType>& userTypes
+)
+{
+    std::vector<insertion> insertions;
+    const dictionary* d = dict.findDict("insertion");
+    if (!d)
+    {
+        return insertions;
+    }
+    static const wordList kinds({"randomFill", "list"});
+    for (const entry& e : *d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*d)
+                << "Entry 'insertion/" << e.keyword()
+                << "' must be a dictionary in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
+        const dictionary& id = e.dict();
+        const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
+        insertion ins;
+        ins.name = e.keyword();
+        ins.type = typeIndex(userTypes, id, "particleType");
+        ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (kind == 1)
+        {
+            ins.kind = insertion::method::list;
+            readParticleList(dict, config, userTypes, id, ins);
+            insertions.push_back(std::move(ins));
+            continue;
+        }
+        ins.number = id.get<label>("number");
+        ins.seed = id.getOrDefault<label>("seed", 1);
+        ins.gap = id.getOrDefault<scalar>("gap", 0);
+        ins.velocity = toVec3(id.getOrDefault<vector>("velocity", Zero));
+        if (id.found("orientation", keyType::LITERAL))
+        {
+            ins.fixedOrientation = true;
+            ins.orientation =
+                orientationFromAngles(id.get<vector>("orientation"));
+        }
+        if (ins.number < 0)
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword()
+                << "/number' must not be negative in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
+        const demShapesReader::userType& ut = userTypes[ins.type];
+        if (ut.polyhedron)
+        {
+            // Placed by bounding sphere: one diameter per shape, equally likely
+            if (id.found("diameterDistribution", keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry 'insertion/" << e.keyword() << "/diameterDistribution'"
+                    << ": particle type '" << ut.name << "' is a polyhedron, whose"
+                    << " size is set by its geometry; remove the entry from "
+                    << dict.name() << nl << exit(FatalIOError);
+            }
+            std::vector<std::pair<double, double>> fr;
+            for (int k = 0; k < ut.nTypes; ++k)
+            {
+                fr.emplace_back(2*config.types[ut.firstType + k].radius, 1.0);
+            }
+            ins.sizes = ut.nTypes == 1
+                ? polydem::SizeDistribution::fixedDiameter(fr[0].first)
+                : polydem::SizeDistribution::discrete(fr);
+            ins.sizes.source = dict.name();
+        }
+        else
+        {
+            ins.sizes = readDistribution(dict, id, config.types[ut.firstType]);
+        }
+        ins.region = readRegion(dict, id);
+        insertions.push_back(std::move(ins));
+    }
+    return insertions;
+}
+
+
+polydem::InsertionTypes Foam::demInsertionsReader::insertionTypes
+(
+    const demShapesReader::userType& type
+)
+{
+    polydem::InsertionTypes t;
+    t.firstType = type.firstType;
+    t.nTypes = type.nTypes;
+    t.polyhedron = type.polyhedron;
+    return t;
+}
+
+
+// ************************************************************************* //

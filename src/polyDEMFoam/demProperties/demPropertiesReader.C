@@ -1,0 +1,240 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    demProperties -> polydem::SimulationConfig (see demPropertiesReader.H and
+    docs/demProperties.md): the general entries, the contact model and the
+    output here; materials, particle types, walls and insertions in their
+    own readers.
+
+\*---------------------------------------------------------------------------*/
+
+#include "demPropertiesReader.H"
+#include "demMaterialsReader.H"
+#include "polyDEMConversions.H"
+#include "IOstreams.H"
+
+#include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/System.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+using Foam::polyDEMConversions::toVec3;
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demPropertiesReader::readGeneral()
+{
+    config_.source = dict_.name();
+    config_.device = dict_.getOrDefault<word>("device", "cpu");
+    config_.timeStep = dict_.get<scalar>("timeStep");
+    // The engine's own check (System::checkTimeStep), done here because
+    // demSimulation divides by the time step before it makes the System
+    try
+    {
+        polydem::System::checkTimeStep(config_);
+    }
+    catch (const polydem::Error& err)
+    {
+        demPropertiesErrors::reportError(err, dict_);
+    }
+    config_.gravity = toVec3(dict_.getOrDefault<vector>("gravity", vector(0, 0, -9.81)));
+    config_.skinFraction = dict_.getOrDefault<scalar>("skin", 0.2);
+
+    if (const dictionary* dom = dict_.findDict("domain"))
+    {
+        config_.domainMin = toVec3(dom->get<vector>("min"));
+        config_.domainMax = toVec3(dom->get<vector>("max"));
+        for (int k = 0; k < 3; ++k)
+        {
+            if (!(config_.domainMin[k] < config_.domainMax[k]))
+            {
+                FatalIOErrorInFunction(*dom)
+                    << "Entry 'domain': min must be below max in every "
+                    << "direction, in " << dict_.name() << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::demPropertiesReader::readContactModel()
+{
+    const dictionary& d = dict_.subDict("contactModel");
+
+    static const wordList laws
+    ({
+        "hertzMindlin", "linearSpringDashpot", "overlapVolume"
+    });
+    static const wordList rollings({"none", "constantTorque", "elasticPlastic"});
+
+    config_.contact.law = polydem::ContactLaw(demPropertiesErrors::selectName(d, "law", laws, "contact law"));
+    config_.contact.rolling =
+        polydem::RollingModel(demPropertiesErrors::selectNameOrDefault(d, "rolling", rollings, "rolling model", 0));
+
+    if (config_.contact.law == polydem::ContactLaw::linearSpringDashpot)
+    {
+        config_.contact.normalStiffness = d.get<scalar>("normalStiffness");
+        config_.contact.tangentialStiffnessRatio =
+            d.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0);
+    }
+    else if (config_.contact.law == polydem::ContactLaw::overlapVolume)
+    {
+        // Fn = volumetricStiffness * overlap volume [N/m3]
+        config_.contact.volumetricStiffness = d.get<scalar>("volumetricStiffness");
+        config_.contact.tangentialStiffnessRatio =
+            d.getOrDefault<scalar>("tangentialStiffnessRatio", 2.0/7.0);
+        if (!(config_.contact.volumetricStiffness > 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry 'contactModel/volumetricStiffness' must be positive"
+                << " [N/m3], got " << config_.contact.volumetricStiffness
+                << " in " << dict_.name() << nl << exit(FatalIOError);
+        }
+    }
+    if (!(config_.contact.tangentialStiffnessRatio > 0))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry 'contactModel/tangentialStiffnessRatio' must be positive"
+            << " in " << dict_.name() << nl << exit(FatalIOError);
+    }
+}
+
+
+void Foam::demPropertiesReader::readOutput()
+{
+    stateFormat_ = polydem::StateFormat::ascii;
+    writeVtk_ = true;
+    reportInterval_ = dict_.getOrDefault<scalar>("reportInterval", 5);
+    if (const dictionary* od = dict_.findDict("output"))
+    {
+        static const wordList formats({"ascii", "binary"});
+        stateFormat_ = polydem::StateFormat
+        (
+            demPropertiesErrors::selectNameOrDefault(*od, "format", formats, "state format", 0)
+        );
+        writeVtk_ = od->getOrDefault<bool>("vtk", true);
+    }
+}
+
+
+void Foam::demPropertiesReader::computeScene()
+{
+    polydem::Vec3 lo(GREAT, GREAT, GREAT), hi(-GREAT, -GREAT, -GREAT);
+    auto grow = [&](const polydem::Vec3& a, const polydem::Vec3& b)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            lo[k] = std::min(lo[k], a[k]);
+            hi[k] = std::max(hi[k], b[k]);
+        }
+    };
+    for (const auto& m : config_.meshes)
+    {
+        const auto bb = polydem::boundingBox(m.mesh);
+        grow(bb.first, bb.second);
+    }
+    for (const auto& ins : insertions_)
+    {
+        if (ins.kind == insertion::method::list)
+        {
+            for (const auto& p : ins.particles)
+            {
+                const polydem::Vec3 r(p.radius, p.radius, p.radius);
+                grow(p.position - r, p.position + r);
+            }
+            continue;
+        }
+        const auto bb = ins.region.bounds();
+        grow(bb.first, bb.second);
+    }
+    if (config_.domainMax.x < 1e29)
+    {
+        grow(config_.domainMin, config_.domainMax);
+    }
+    if (lo.x > hi.x)
+    {
+        sceneSize_ = 0.1;
+        sceneCentre_ = polydem::Vec3();
+        for (const auto& p : config_.planes)
+        {
+            sceneCentre_ = p.point;
+        }
+        return;
+    }
+    sceneSize_ = std::max(norm(hi - lo), SMALL);
+    sceneCentre_ = 0.5*(lo + hi);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demPropertiesReader::demPropertiesReader(const dictionary& demProperties)
+:
+    dict_(demProperties),
+    stateFormat_(polydem::StateFormat::ascii),
+    writeVtk_(true),
+    reportInterval_(5),
+    sceneSize_(0.1)
+{
+    readGeneral();
+    readContactModel();
+    demMaterialsReader::readMaterials(dict_, config_);
+    demMaterialsReader::readInteractions(dict_, config_);
+    userTypes_ = demShapesReader::read(dict_, config_);
+    walls_ = demWallsReader::read(dict_, config_);
+    insertions_ = demInsertionsReader::read(dict_, config_, userTypes_);
+    readOutput();
+    computeScene();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+polydem::SimulationConfig Foam::demPropertiesReader::configWith
+(
+    const std::vector<bool>& activeWalls,
+    std::vector<int>& wallMap
+) const
+{
+    polydem::SimulationConfig c = config_;
+    c.planes.clear();
+    c.meshes.clear();
+
+    const size_t nPl = config_.planes.size();
+    wallMap.assign(nPl + config_.meshes.size(), -1);
+
+    // Keep planes first, then meshes: the engine's wall numbering
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const wallInfo& w = walls_[k];
+        if (w.isPlane && activeWalls[k])
+        {
+            wallMap[w.index] = int(c.planes.size());
+            c.planes.push_back(config_.planes[w.index]);
+        }
+    }
+    for (size_t k = 0; k < walls_.size(); ++k)
+    {
+        const wallInfo& w = walls_[k];
+        if (!w.isPlane && activeWalls[k])
+        {
+            c.meshes.push_back(config_.meshes[w.index]);
+            wallMap[nPl + w.index] = -2 - int(c.meshes.size() - 1);
+        }
+    }
+    // Mesh indices come after the kept planes
+    for (size_t k = nPl; k < wallMap.size(); ++k)
+    {
+        if (wallMap[k] <= -2)
+        {
+            wallMap[k] = int(c.planes.size()) + (-2 - wallMap[k]);
+        }
+    }
+    return c;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,125 @@
+/*---------------------------------------------------------------------------*\
+  Hedra: CFD-DEM for OpenFOAM
+-------------------------------------------------------------------------------
+Description
+    demProperties 'walls' (see demWallsReader.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "demWallsReader.H"
+#include "demMaterialsReader.H"
+#include "demPropertiesErrors.H"
+#include "demSurfaceReader.H"
+#include "polyDEMConversions.H"
+#include "IOstreams.H"
+#include "mathematicalConstants.H"
+
+using Foam::polyDEMConversions::toVec3;
+
+// * * * * * * * * * * * * Private Static Functions  * * * * * * * * * * * * //
+
+polydem::WallMotion Foam::demWallsReader::readMotion
+(
+    const dictionary& wallDict
+)
+{
+    polydem::WallMotion m;
+    const dictionary* md = wallDict.findDict("motion");
+    if (!md)
+    {
+        return m;
+    }
+    static const wordList kinds({"fixed", "translation", "rotation"});
+    m.kind = polydem::MotionKind
+    (
+        demPropertiesErrors::selectName(*md, "type", kinds, "wall motion type")
+    );
+    if (m.kind == polydem::MotionKind::translation)
+    {
+        m.velocity = toVec3(md->get<vector>("velocity"));
+    }
+    else if (m.kind == polydem::MotionKind::rotation)
+    {
+        m.origin = toVec3(md->get<vector>("origin"));
+        m.axis = toVec3(md->get<vector>("axis"));
+        const bool hasRpm = md->found("rpm", keyType::LITERAL);
+        const bool hasOmega = md->found("omega", keyType::LITERAL);
+        if (hasRpm == hasOmega)
+        {
+            FatalIOErrorInFunction(*md)
+                << "Rotation of " << md->name() << " needs exactly one of "
+                << "'rpm' (revolutions per minute) or 'omega' [rad/s]" << nl
+                << exit(FatalIOError);
+        }
+        m.omega = hasRpm
+            ? md->get<scalar>("rpm")*constant::mathematical::twoPi/60.0
+            : md->get<scalar>("omega");
+    }
+    return m;
+}
+
+
+// * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
+
+std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
+(
+    const dictionary& dict,
+    polydem::SimulationConfig& config
+)
+{
+    std::vector<wallInfo> walls;
+    const dictionary* d = dict.findDict("walls");
+    if (!d)
+    {
+        return walls;
+    }
+    static const wordList types({"plane", "mesh"});
+    for (const entry& e : *d)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(*d)
+                << "Entry 'walls/" << e.keyword() << "' must be a dictionary in "
+                << dict.name() << nl << exit(FatalIOError);
+        }
+        const dictionary& wd = e.dict();
+        wallInfo info;
+        info.name = e.keyword();
+        info.activeUntil = wd.getOrDefault<scalar>("activeUntil", GREAT);
+        info.displaySize = wd.getOrDefault<scalar>("displaySize", 0);
+
+        const label kind =
+            demPropertiesErrors::selectName(wd, "type", types, "wall type");
+        if (kind == 0)
+        {
+            polydem::PlaneWall w;
+            w.name = e.keyword();
+            w.point = toVec3(wd.get<vector>("point"));
+            w.normal = toVec3(wd.get<vector>("normal"));
+            w.material = demMaterialsReader::materialIndex(config, wd, "material");
+            w.motion = readMotion(wd);
+            info.isPlane = true;
+            info.index = label(config.planes.size());
+            config.planes.push_back(w);
+        }
+        else
+        {
+            polydem::MeshWall w;
+            w.name = e.keyword();
+            w.material = demMaterialsReader::materialIndex(config, wd, "material");
+            w.motion = readMotion(wd);
+            w.mesh = demSurfaceReader::read
+            (
+                dict, wd, "file", "walls/" + e.keyword() + "/file"
+            );
+            info.isPlane = false;
+            info.index = label(config.meshes.size());
+            config.meshes.push_back(std::move(w));
+        }
+        walls.push_back(info);
+    }
+    return walls;
+}
+
+
+// ************************************************************************* //
