@@ -381,6 +381,7 @@ Foam::demSimulation::demSimulation
     const bool globalOutput
 )
 :
+    demParticleSource(runTime),
     runTime_(runTime),
     properties_(properties),
     globalOutput_(globalOutput),
@@ -391,7 +392,8 @@ Foam::demSimulation::demSimulation
     wallMap_(),
     insertionDone_(input_.insertions().size(), false),
     stepsPerDeltaT_(computeStepsPerDeltaT()),
-    monitors_(),
+    stateCache_(),
+    stateCacheStep_(-1),
     summary_(),
     clock_(),
     wallStart_(0),
@@ -490,23 +492,23 @@ Foam::demSimulation::demSimulation
         << "', time step " << dt << " s, " << stepsPerDeltaT_
         << " steps per deltaT" << endl;
 
-    // Monitors
-    if (const dictionary* md = properties_.findDict("monitors"))
+    // The monitors of earlier versions are function objects now
+    if (properties_.found("monitors"))
     {
-        for (const entry& e : *md)
-        {
-            if (!e.isDict())
-            {
-                FatalIOErrorInFunction(*md)
-                    << "Entry 'monitors/" << e.keyword()
-                    << "' must be a dictionary in " << input_.dict().name()
-                    << nl << exit(FatalIOError);
-            }
-            monitors_.append
-            (
-                demMonitor::New(e.keyword(), e.dict(), runTime_, input_.config())
-            );
-        }
+        FatalIOErrorInFunction(properties_)
+            << "Entry 'monitors' in " << input_.dict().name()
+            << " is no longer read: the particle monitors are function "
+            << "objects now. Move each of them into the 'functions' "
+            << "dictionary of system/controlDict, adding "
+            << "'libs (demFunctionObjects);', e.g." << nl << nl
+            << "    functions" << nl
+            << "    {" << nl
+            << "        outlet { type planeFlux; libs (demFunctionObjects); "
+            << "point (0 0 -0.01); normal (0 0 -1); }" << nl
+            << "    }" << nl << nl
+            << "(types planeFlux, reposeAngle, boundingBox; their entries "
+            << "are unchanged; docs/demProperties.md)" << nl
+            << exit(FatalIOError);
     }
 
     // Summary
@@ -568,15 +570,6 @@ void Foam::demSimulation::sample()
         << label(s.wallContacts) << ' ' << label(s.particlesInContact) << ' '
         << e.kinetic() << ' ' << e.translational << ' ' << e.rotational << ' '
         << e.gravitational << ' ' << s.maxOverlapRatio << endl;
-
-    if (monitors_.size())
-    {
-        const polydem::ParticleState p = engine.particles();
-        for (demMonitor& m : monitors_)
-        {
-            m.update(engine.time(), p);
-        }
-    }
 }
 
 
@@ -623,6 +616,35 @@ void Foam::demSimulation::report(bool force)
 
     lastReportWall_ = now;
     lastReportStep_ = engine.step();
+}
+
+
+// ************************************************************************* //
+
+
+// * * * * * * * * * * * * * *  demParticleSource  * * * * * * * * * * * * * //
+
+const polydem::ParticleState& Foam::demSimulation::particleState() const
+{
+    const polydem::Engine& engine = system_->engine();
+    if (stateCacheStep_ != engine.step())
+    {
+        stateCache_ = engine.particles();
+        stateCacheStep_ = engine.step();
+    }
+    return stateCache_;
+}
+
+
+const polydem::SimulationConfig& Foam::demSimulation::particleConfig() const
+{
+    return input_.config();
+}
+
+
+Foam::scalar Foam::demSimulation::particleTime() const
+{
+    return system_->engine().time();
 }
 
 

@@ -16,26 +16,36 @@ Description
 
 namespace Foam
 {
-namespace demMonitors
+namespace functionObjects
 {
     defineTypeNameAndDebug(boundingBox, 0);
-    addToRunTimeSelectionTable(demMonitor, boundingBox, dictionary);
+    addToRunTimeSelectionTable(functionObject, boundingBox, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demMonitors::boundingBox::boundingBox
+Foam::functionObjects::boundingBox::boundingBox
 (
     const word& name,
-    const dictionary& dict,
     const Time& runTime,
-    const polydem::SimulationConfig& config
+    const dictionary& dict
 )
 :
-    demMonitor(name, dict, runTime, config)
+    demParticleFunctionObject(name, runTime, dict)
 {
+    initialise();
+}
+
+
+void Foam::functionObjects::boundingBox::readSettings
+(
+    const dictionary& dict,
+    const polydem::SimulationConfig& config
+)
+{
+
     const vector o(dict.getOrDefault<vector>("origin", Zero));
     origin_ = polydem::Vec3(o.x(), o.y(), o.z());
     polydem::Vec3 up = -1.0*config.gravity;
@@ -54,7 +64,7 @@ Foam::demMonitors::boundingBox::boundingBox
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
 
-void Foam::demMonitors::boundingBox::writeHeader(Ostream& os) const
+void Foam::functionObjects::boundingBox::writeHeader(Ostream& os) const
 {
     os  << "boundingBox of the particles; bedHeight along "
         << vector(up_.x, up_.y, up_.z) << nl
@@ -63,7 +73,7 @@ void Foam::demMonitors::boundingBox::writeHeader(Ostream& os) const
 }
 
 
-void Foam::demMonitors::boundingBox::sample
+void Foam::functionObjects::boundingBox::sample
 (
     scalar t,
     const polydem::ParticleState& p

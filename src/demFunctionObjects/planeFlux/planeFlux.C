@@ -17,35 +17,45 @@ Description
 
 namespace Foam
 {
-namespace demMonitors
+namespace functionObjects
 {
     defineTypeNameAndDebug(planeFlux, 0);
-    addToRunTimeSelectionTable(demMonitor, planeFlux, dictionary);
+    addToRunTimeSelectionTable(functionObject, planeFlux, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demMonitors::planeFlux::planeFlux
+Foam::functionObjects::planeFlux::planeFlux
 (
     const word& name,
-    const dictionary& dict,
     const Time& runTime,
-    const polydem::SimulationConfig& config
+    const dictionary& dict
 )
 :
-    demMonitor(name, dict, runTime, config),
-    window_(dict.getOrDefault<scalar>("averagingWindow", 0.1)),
+    demParticleFunctionObject(name, runTime, dict),
     count_(0),
     mass_(0)
 {
+    initialise();
+}
+
+
+void Foam::functionObjects::planeFlux::readSettings
+(
+    const dictionary& dict,
+    const polydem::SimulationConfig&
+)
+{
+    window_ = dict.getOrDefault<scalar>("averagingWindow", 0.1);
+
     const vector p(dict.get<vector>("point"));
     vector n(dict.get<vector>("normal"));
     if (mag(n) < VSMALL)
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'normal' of monitor " << name << " is zero in "
+            << "Entry 'normal' of function object " << name() << " is zero in "
             << dict.name() << nl << exit(FatalIOError);
     }
     n /= mag(n);
@@ -56,7 +66,7 @@ Foam::demMonitors::planeFlux::planeFlux
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
 
-void Foam::demMonitors::planeFlux::writeHeader(Ostream& os) const
+void Foam::functionObjects::planeFlux::writeHeader(Ostream& os) const
 {
     os  << "planeFlux through point " << vector(point_.x, point_.y, point_.z)
         << " normal " << vector(normal_.x, normal_.y, normal_.z)
@@ -65,7 +75,7 @@ void Foam::demMonitors::planeFlux::writeHeader(Ostream& os) const
 }
 
 
-void Foam::demMonitors::planeFlux::sample
+void Foam::functionObjects::planeFlux::sample
 (
     scalar t,
     const polydem::ParticleState& p

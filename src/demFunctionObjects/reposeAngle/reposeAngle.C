@@ -20,29 +20,39 @@ Description
 
 namespace Foam
 {
-namespace demMonitors
+namespace functionObjects
 {
     defineTypeNameAndDebug(reposeAngle, 0);
-    addToRunTimeSelectionTable(demMonitor, reposeAngle, dictionary);
+    addToRunTimeSelectionTable(functionObject, reposeAngle, dictionary);
 }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demMonitors::reposeAngle::reposeAngle
+Foam::functionObjects::reposeAngle::reposeAngle
 (
     const word& name,
-    const dictionary& dict,
     const Time& runTime,
-    const polydem::SimulationConfig& config
+    const dictionary& dict
 )
 :
-    demMonitor(name, dict, runTime, config),
-    fitFraction_(dict.getOrDefault<scalar>("fitFraction", 0.6)),
-    axialMin_(dict.getOrDefault<scalar>("axialMin", -GREAT)),
-    axialMax_(dict.getOrDefault<scalar>("axialMax", GREAT))
+    demParticleFunctionObject(name, runTime, dict)
 {
+    initialise();
+}
+
+
+void Foam::functionObjects::reposeAngle::readSettings
+(
+    const dictionary& dict,
+    const polydem::SimulationConfig& config
+)
+{
+    fitFraction_ = dict.getOrDefault<scalar>("fitFraction", 0.6);
+    axialMin_ = dict.getOrDefault<scalar>("axialMin", -GREAT);
+    axialMax_ = dict.getOrDefault<scalar>("axialMax", GREAT);
+
     const vector o(dict.get<vector>("origin"));
     const vector a(dict.get<vector>("axis"));
     origin_ = polydem::Vec3(o.x(), o.y(), o.z());
@@ -50,7 +60,7 @@ Foam::demMonitors::reposeAngle::reposeAngle
     if (norm(axis_) < VSMALL)
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'axis' of monitor " << name << " is zero in "
+            << "Entry 'axis' of function object " << name() << " is zero in "
             << dict.name() << nl << exit(FatalIOError);
     }
     axis_ = axis_/norm(axis_);
@@ -61,7 +71,7 @@ Foam::demMonitors::reposeAngle::reposeAngle
     if (norm(up) < VSMALL)
     {
         FatalIOErrorInFunction(dict)
-            << "Monitor " << name << ": the drum axis is parallel to gravity"
+            << "Function object " << name() << ": the drum axis is parallel to gravity"
             << " in " << dict.name() << nl << exit(FatalIOError);
     }
     up_ = up/norm(up);
@@ -76,7 +86,7 @@ Foam::demMonitors::reposeAngle::reposeAngle
     if (!(binWidth_ > 0) || !(fitFraction_ > 0 && fitFraction_ <= 1))
     {
         FatalIOErrorInFunction(dict)
-            << "Monitor " << name << ": binWidth must be positive and "
+            << "Function object " << name() << ": binWidth must be positive and "
             << "fitFraction in (0, 1] in " << dict.name() << nl
             << exit(FatalIOError);
     }
@@ -85,7 +95,7 @@ Foam::demMonitors::reposeAngle::reposeAngle
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
 
-void Foam::demMonitors::reposeAngle::writeHeader(Ostream& os) const
+void Foam::functionObjects::reposeAngle::writeHeader(Ostream& os) const
 {
     os  << "reposeAngle: free-surface line fitted over the central "
         << fitFraction_ << " of bins " << binWidth_ << " m wide" << nl
@@ -93,7 +103,7 @@ void Foam::demMonitors::reposeAngle::writeHeader(Ostream& os) const
 }
 
 
-void Foam::demMonitors::reposeAngle::sample
+void Foam::functionObjects::reposeAngle::sample
 (
     scalar t,
     const polydem::ParticleState& p
