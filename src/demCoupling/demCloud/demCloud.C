@@ -2,7 +2,6 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
-#include <fstream>
 
 namespace Foam
 {
@@ -675,7 +674,7 @@ void Foam::demCloud::computeForces
     // Hand the forces to the back end (engine order) for the next advance
     if (Pstream::master())
     {
-        backend_->setForces(force_);
+        backend_->setForces(force_, List<vector>());
     }
 
     // Velocities of this step, for dUp/dt at the next
@@ -794,76 +793,39 @@ void Foam::demCloud::evolve
 
 void Foam::demCloud::write()
 {
+    // The back end writes its state and the forces it holds for the next
+    // advance (<time>/polyDEM/fluidForces, handed over again by start())
     if (Pstream::master())
     {
         backend_->write();
-        if (mesh_.time().writeTime())
-        {
-            // The forces the back end holds for its next advance: read back
-            // on restart so that a restarted run continues as if unbroken
-            const fileName dir(mesh_.time().timePath()/"polyDEM");
-            mkDir(dir);
-            OFstream os(dir/"fluidForces");
-            os.precision(17);
-            os  << "// demCloud: fluid force [N] per particle id, for restart"
-                << nl << force_.size() << nl;
-            forAll(force_, i)
-            {
-                os  << particles_.id[i] << ' ' << force_[i].x() << ' '
-                    << force_[i].y() << ' ' << force_[i].z() << nl;
-            }
-        }
     }
 }
 
 
 bool Foam::demCloud::restartFilesPresent() const
 {
-    bool found =
-        Pstream::master()
-     && isFile(mesh_.time().timePath()/"polyDEM"/"fluidForces");
+    bool found = Pstream::master() && backend_->restartForcesFound();
     reduce(found, orOp<bool>());
     return found;
 }
 
 
-bool Foam::demCloud::readRestartForces()
+void Foam::demCloud::start
+(
+    const volScalarField& nu,
+    const volScalarField& nuEff,
+    const surfaceScalarField& alphaPhi
+)
 {
-    bool found = false;
+    computeForces(nu, nuEff, alphaPhi);
+    // The first handover: at a restart the back end replaces the forces by
+    // those written with its state
     if (Pstream::master())
     {
-        const fileName f(mesh_.time().timePath()/"polyDEM"/"fluidForces");
-        if (isFile(f))
-        {
-            std::ifstream is(f);
-            std::string comment;
-            std::getline(is, comment);
-            long n = 0;
-            is >> n;
-            Map<vector> byId;
-            for (long k = 0; k < n; ++k)
-            {
-                long id;
-                double x, y, z;
-                is >> id >> x >> y >> z;
-                byId.set(label(id), vector(x, y, z));
-            }
-            if (!is)
-            {
-                FatalErrorInFunction
-                    << "Cannot read " << f << exit(FatalError);
-            }
-            forAll(force_, i)
-            {
-                force_[i] = byId.lookup(particles_.id[i], force_[i]);
-            }
-            backend_->setForces(force_);
-            Info<< "demCloud: fluid forces of the restart read from " << f
-                << endl;
-            found = true;
-        }
+        List<vector> torque;
+        backend_->start(force_, torque);
     }
     broadcast(force_);
-    reduce(found, orOp<bool>());
-    return found;
 }
+
+
