@@ -55,7 +55,7 @@ runTimeModifiable false;
                 f"nu {NU};\nrho {RHO_F};\n")
     hc.fields(case, {"walls": "type noSlip;"}, {"walls": "type zeroGradient;"})
     hc.foamfile(os.path.join(case, "constant/ibProperties"), "ibProperties", f"""
-motion polyDEM;
+demBackend polyDEM;
 directForcing {{ nSubSamples 4; integralForcing true; }}
 lubrication {{ model {model}; cutoff {CUT}; minGap {HMIN}; }}
 """)

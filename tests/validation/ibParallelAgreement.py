@@ -2,7 +2,7 @@
 """demIbFoam: serial and 2-rank runs agree.
 
 The settling-sphere case (tests/validation/ib/settlingSphere: one glass
-sphere, d = 4 mm, in a 20 x 20 x 40 mm box, d/dx = 4, motion polyDEM) to
+sphere, d = 4 mm, in a 20 x 20 x 40 mm box, d/dx = 4, demBackend polyDEM) to
 t = 0.05 s, serial and decomposed in two (simple (2 1 1): the split plane
 x = 10 mm goes through the sphere, whose centre starts 0.07 mm from it), with
 the linear solvers converged to 1e-12 so that what is compared is the

@@ -3,7 +3,7 @@
 
 The settling-sphere case (tests/validation/ib/settlingSphere: a glass sphere,
 d = 4 mm, rho_p 2500, in a 20 x 20 x 40 mm box of fluid rho 1000, nu 1e-4,
-motion polyDEM) run twice to t = 0.1 s (the sphere falls ~6 mm, 3 base cells):
+demBackend polyDEM) run twice to t = 0.1 s (the sphere falls ~6 mm, 3 base cells):
   A. uniform mesh of 1 mm cells (d/dx = 4), 16 000 cells;
   B. base mesh of 2 mm cells (d/dx = 2) refined one level around the sphere
      by dynamicRefineFvMesh on the field ibRefinement (ibRefinementIndicator),

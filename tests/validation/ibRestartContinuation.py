@@ -2,7 +2,7 @@
 """demIbFoam: a resolved run stopped and restarted continues as if unbroken.
 
 The settling-sphere case (tests/validation/ib/settlingSphere: one glass
-sphere, d = 4 mm, in a 20 x 20 x 40 mm box, d/dx = 4, motion polyDEM,
+sphere, d = 4 mm, in a 20 x 20 x 40 mm box, d/dx = 4, demBackend polyDEM,
 internalFluid as the case sets it) with ascii fields at 17 digits.
 Run A: 0 -> t1 in one go. Run B: 0 -> t0, then restarted from the t0 folder
 (fields U p phi fIB phiIB, the DEM state <t0>/polyDEM/state and the

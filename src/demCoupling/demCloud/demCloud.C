@@ -1,6 +1,8 @@
 #include "demCloud.H"
 #include "demParallel.H"
 #include "mathematicalConstants.H"
+#include "OSspecific.H"
+#include "IOmanip.H"
 
 namespace Foam
 {
@@ -267,7 +269,7 @@ void Foam::demCloud::computeForces
     // Hand the forces to the back end (engine order) for the next advance
     if (Pstream::master())
     {
-        backend_->setForces(force_);
+        backend_->setForces(force_, List<vector>());
     }
 
     // Velocities of this step, for dUp/dt at the next
@@ -334,34 +336,39 @@ void Foam::demCloud::evolve
 
 void Foam::demCloud::write()
 {
+    // The back end writes its state and the forces it holds for the next
+    // advance (<time>/polyDEM/fluidForces, handed over again by start())
     if (Pstream::master())
     {
         backend_->write();
-        io_.writeFluidForces(particles_.id, force_);
     }
 }
 
 
 bool Foam::demCloud::restartFilesPresent() const
 {
-    bool found = Pstream::master() && isFile(io_.fluidForcesFile());
+    bool found = Pstream::master() && backend_->restartForcesFound();
     reduce(found, orOp<bool>());
     return found;
 }
 
 
-bool Foam::demCloud::readRestartForces()
+void Foam::demCloud::start
+(
+    const volScalarField& nu,
+    const volScalarField& nuEff,
+    const surfaceScalarField& alphaPhi
+)
 {
-    bool found = false;
+    computeForces(nu, nuEff, alphaPhi);
+    // The first handover: at a restart the back end replaces the forces by
+    // those written with its state
     if (Pstream::master())
     {
-        if (io_.readFluidForces(particles_.id, force_))
-        {
-            backend_->setForces(force_);
-            found = true;
-        }
+        List<vector> torque;
+        backend_->start(force_, torque);
     }
     broadcast(force_);
-    reduce(found, orOp<bool>());
-    return found;
 }
+
+

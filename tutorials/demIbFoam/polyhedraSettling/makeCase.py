@@ -25,7 +25,7 @@ The particle is released at rest by a `type list` insertion in
 constant/demProperties with its position and orientation (long axis = body
 x, the axis of least moment: along world x for H, along world z, tilted by
 -tilt about y, for V; `orientation (0 b 0)`, a rotation by b degrees about
-world y), inserted by demIbFoam (motion polyDEM) at the start.
+world y), inserted by demIbFoam (demBackend polyDEM) at the start.
 """
 import math
 import os

@@ -1,4 +1,8 @@
 #include "demBackend.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "Map.H"
+#include <fstream>
 
 namespace Foam
 {
@@ -7,16 +11,81 @@ namespace Foam
 }
 
 
-Foam::demBackend::demBackend(const Time& runTime)
+namespace
+{
+//- One file of held vectors: a comment line, the count, then "id x y z"
+void writeVectors
+(
+    const Foam::fileName& f,
+    const char* comment,
+    const Foam::labelUList& ids,
+    const Foam::UList<Foam::vector>& v
+)
+{
+    using namespace Foam;
+    OFstream os(f);
+    os.precision(17);
+    os  << comment << nl << v.size() << nl;
+    forAll(v, i)
+    {
+        os  << ids[i] << ' ' << v[i].x() << ' ' << v[i].y() << ' '
+            << v[i].z() << nl;
+    }
+}
+
+//- v[i] = the value read for ids[i] (kept where the file has none);
+//  false if there is no file
+bool readVectors
+(
+    const Foam::fileName& f,
+    const Foam::labelUList& ids,
+    Foam::List<Foam::vector>& v
+)
+{
+    using namespace Foam;
+    if (!isFile(f))
+    {
+        return false;
+    }
+    std::ifstream is(f);
+    std::string comment;
+    std::getline(is, comment);
+    long n = 0;
+    is >> n;
+    Map<vector> byId;
+    for (long k = 0; k < n; ++k)
+    {
+        long id;
+        double x, y, z;
+        is >> id >> x >> y >> z;
+        byId.set(label(id), vector(x, y, z));
+    }
+    if (!is)
+    {
+        FatalErrorInFunction
+            << "Cannot read " << f << exit(FatalError);
+    }
+    forAll(v, i)
+    {
+        v[i] = byId.lookup(ids[i], v[i]);
+    }
+    return true;
+}
+}
+
+
+Foam::demBackend::demBackend(const Time& runTime, const bool globalOutput)
 :
-    runTime_(runTime)
+    runTime_(runTime),
+    globalOutput_(globalOutput)
 {}
 
 
 Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
 (
     const Time& runTime,
-    const dictionary& dict
+    const dictionary& dict,
+    const bool globalOutput
 )
 {
     const word modelType(dict.getOrDefault<word>("demBackend", "polyDEM"));
@@ -30,5 +99,72 @@ Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
             dict, "demBackend", modelType, *dictionaryConstructorTablePtr_
         ) << exit(FatalIOError);
     }
-    return autoPtr<demBackend>(cstrIter()(modelType, runTime, dict));
+    return autoPtr<demBackend>
+    (
+        cstrIter()(modelType, runTime, dict, globalOutput)
+    );
+}
+
+
+Foam::fileName Foam::demBackend::casePath() const
+{
+    return globalOutput_ ? runTime_.globalPath() : runTime_.path();
+}
+
+
+Foam::fileName Foam::demBackend::stateDir() const
+{
+    return casePath()/runTime_.timeName()/"polyDEM";
+}
+
+
+void Foam::demBackend::writeHeldForces
+(
+    const labelUList& ids,
+    const UList<vector>& F,
+    const UList<vector>& T
+) const
+{
+    const fileName dir(stateDir());
+    mkDir(dir);
+    writeVectors
+    (
+        dir/"fluidForces",
+        "// demCloud: fluid force [N] per particle id, for restart",
+        ids,
+        F
+    );
+    if (T.size())
+    {
+        writeVectors
+        (
+            dir/"fluidTorques",
+            "// fluid torque [N m] per particle id, for restart",
+            ids,
+            T
+        );
+    }
+}
+
+
+bool Foam::demBackend::readHeldForces
+(
+    const labelUList& ids,
+    List<vector>& F,
+    List<vector>& T
+) const
+{
+    const fileName dir(stateDir());
+    if (!readVectors(dir/"fluidForces", ids, F))
+    {
+        return false;
+    }
+    Info<< "demBackend: fluid forces of the restart read from "
+        << dir/"fluidForces" << endl;
+    if (isFile(dir/"fluidTorques"))
+    {
+        T.setSize(ids.size(), Zero);
+        readVectors(dir/"fluidTorques", ids, T);
+    }
+    return true;
 }

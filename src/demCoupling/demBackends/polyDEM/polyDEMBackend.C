@@ -2,6 +2,10 @@
 #include "addToRunTimeSelectionTable.H"
 #include "polyDEM/Error.hpp"
 #include "polyDEMConversions.H"
+#include "polyDEM/Quaternion.hpp"
+#include "polyDEM/MeshQueries.hpp"
+#include "OSspecific.H"
+#include "DynamicList.H"
 
 namespace Foam
 {
@@ -10,14 +14,88 @@ namespace Foam
 }
 
 
+namespace
+{
+using Foam::polyDEMConversions::toVec3;
+using Foam::polyDEMConversions::toVector;
+
+//- Rigid motion of a wall at time t: x(t) = place(x(0)), and back
+struct WallFrame
+{
+    const polydem::WallMotion& m;
+    double t;
+
+    polydem::Quaternion R() const
+    {
+        const polydem::Vec3 a = m.axis/norm(m.axis);
+        return polydem::fromRotationVector((m.omega*t)*a);
+    }
+
+    Foam::vector forward(const Foam::vector& y) const
+    {
+        if (m.kind == polydem::MotionKind::translation)
+        {
+            return y + t*toVector(m.velocity);
+        }
+        if (m.kind == polydem::MotionKind::rotation)
+        {
+            return toVector(m.origin + polydem::rotate(R(), toVec3(y) - m.origin));
+        }
+        return y;
+    }
+
+    Foam::vector backward(const Foam::vector& x) const
+    {
+        if (m.kind == polydem::MotionKind::translation)
+        {
+            return x - t*toVector(m.velocity);
+        }
+        if (m.kind == polydem::MotionKind::rotation)
+        {
+            return toVector
+            (
+                m.origin + polydem::rotateInverse(R(), toVec3(x) - m.origin)
+            );
+        }
+        return x;
+    }
+
+    Foam::vector rotateNormal(const Foam::vector& n) const
+    {
+        if (m.kind == polydem::MotionKind::rotation)
+        {
+            return toVector(polydem::rotate(R(), toVec3(n)));
+        }
+        return n;
+    }
+
+    //- Velocity of the wall's material point now at x
+    Foam::vector velocity(const Foam::vector& x) const
+    {
+        if (m.kind == polydem::MotionKind::translation)
+        {
+            return toVector(m.velocity);
+        }
+        if (m.kind == polydem::MotionKind::rotation)
+        {
+            const Foam::vector a = toVector(m.axis/norm(m.axis));
+            return (m.omega*a) ^ (x - toVector(m.origin));
+        }
+        return Foam::Zero;
+    }
+};
+}
+
+
 Foam::polyDEMBackend::polyDEMBackend
 (
     const word& modelType,
     const Time& runTime,
-    const dictionary& dict
+    const dictionary& dict,
+    const bool globalOutput
 )
 :
-    demBackend(runTime),
+    demBackend(runTime, globalOutput),
     parRunGuard_(),
     demProperties_
     (
@@ -30,11 +108,16 @@ Foam::polyDEMBackend::polyDEMBackend
             IOobject::NO_WRITE
         )
     ),
-    dem_()
+    dem_(),
+    heldForce_(),
+    heldTorque_(),
+    holding_(false),
+    restartForces_(isFile(stateDir()/"fluidForces")),
+    sample_(dict.getOrDefault<bool>("demSummary", true))
 {
     try
     {
-        dem_.reset(new demSimulation(runTime, demProperties_));
+        dem_.reset(new demSimulation(runTime, demProperties_, globalOutput));
     }
     catch (const polydem::Error& err)
     {
@@ -157,16 +240,130 @@ void Foam::polyDEMBackend::particles(demParticleArrays& p) const
 }
 
 
-void Foam::polyDEMBackend::setForces(const List<vector>& F)
+Foam::labelList Foam::polyDEMBackend::engineIds() const
 {
-    std::vector<polydem::Vec3> force(F.size());
+    const polydem::ParticleState s = dem_->system().engine().particles();
+    labelList ids(s.size());
+    forAll(ids, i)
+    {
+        ids[i] = label(s.id[i]);
+    }
+    return ids;
+}
+
+
+Foam::vector Foam::polyDEMBackend::gravity() const
+{
+    return toVector(dem_->input().config().gravity);
+}
+
+
+Foam::List<Foam::demWallPoint> Foam::polyDEMBackend::wallPoints
+(
+    const point& x,
+    scalar t
+) const
+{
+    // The walls of the running system (removed walls are gone from it)
+    const polydem::SimulationConfig& walls = dem_->system().config();
+    DynamicList<demWallPoint> points
+    (
+        label(walls.planes.size() + walls.meshes.size())
+    );
+
+    for (const polydem::PlaneWall& pl : walls.planes)
+    {
+        const WallFrame frame{pl.motion, t};
+        const vector p = frame.forward(toVector(pl.point));
+        vector n = frame.rotateNormal(toVector(pl.normal));
+        n /= mag(n);
+        demWallPoint wp;
+        wp.normal = n;
+        wp.distance = (x - p) & n;
+        wp.velocity = frame.velocity(x - wp.distance*n);
+        points.append(wp);
+    }
+
+    for (const polydem::MeshWall& mw : walls.meshes)
+    {
+        // Nearest triangle point in the mesh's own frame
+        const WallFrame frame{mw.motion, t};
+        const vector y = frame.backward(x);
+        scalar best = GREAT;
+        vector closest(Zero);
+        for (const auto& tri : mw.mesh.triangles)
+        {
+            const vector c = toVector
+            (
+                polydem::closestPointOnTriangle
+                (
+                    toVec3(y),
+                    mw.mesh.points[tri[0]],
+                    mw.mesh.points[tri[1]],
+                    mw.mesh.points[tri[2]]
+                )
+            );
+            const scalar dd = magSqr(y - c);
+            if (dd < best)
+            {
+                best = dd;
+                closest = c;
+            }
+        }
+        const scalar dist = Foam::sqrt(best);
+        // No triangles, or x on the surface (no normal)
+        if (best >= GREAT || dist < VSMALL)
+        {
+            continue;
+        }
+        const vector c = frame.forward(closest);
+        demWallPoint wp;
+        wp.normal = (x - c)/mag(x - c);
+        wp.distance = dist;
+        wp.velocity = frame.velocity(c);
+        points.append(wp);
+    }
+
+    List<demWallPoint> result;
+    result.transfer(points);
+    return result;
+}
+
+
+bool Foam::polyDEMBackend::restartForcesFound() const
+{
+    return restartForces_;
+}
+
+
+void Foam::polyDEMBackend::start(List<vector>& F, List<vector>& T)
+{
+    if (restartForces_)
+    {
+        readHeldForces(engineIds(), F, T);
+    }
+    setForces(F, T);
+}
+
+
+void Foam::polyDEMBackend::setForces
+(
+    const List<vector>& F,
+    const List<vector>& T
+)
+{
+    std::vector<polydem::Vec3> force(F.size()), torque(T.size());
     forAll(F, i)
     {
-        force[i] = polyDEMConversions::toVec3(F[i]);
+        force[i] = toVec3(F[i]);
+    }
+    forAll(T, i)
+    {
+        torque[i] = toVec3(T[i]);
     }
     try
     {
-        dem_->system().engine().setExternalForces(force, {});
+        dem_->system().engine().setExternalForces(force, torque);
     }
     catch (const polydem::Error& err)
     {
@@ -174,6 +371,9 @@ void Foam::polyDEMBackend::setForces(const List<vector>& F)
             << "polyDEM refused the fluid forces: " << err.what()
             << exit(FatalError);
     }
+    heldForce_ = F;
+    heldTorque_ = T;
+    holding_ = true;
 }
 
 
@@ -181,8 +381,12 @@ void Foam::polyDEMBackend::evolve()
 {
     try
     {
+        holding_ = false;
         dem_->evolve();
-        dem_->sample();
+        if (sample_)
+        {
+            dem_->sample();
+        }
     }
     catch (const polydem::Error& err)
     {
@@ -194,6 +398,12 @@ void Foam::polyDEMBackend::evolve()
 void Foam::polyDEMBackend::write()
 {
     dem_->write();
+    if (holding_ && runTime_.writeTime())
+    {
+        // Forces for the next advance: start() hands them over again at a
+        // restart, so that the restarted run continues as if unbroken
+        writeHeldForces(engineIds(), heldForce_, heldTorque_);
+    }
 }
 
 

@@ -5,83 +5,69 @@
 #include "ibParticles.H"
 #include "Time.H"
 #include "mathematicalConstants.H"
-#include "demSimulation.H"
-#include "demPropertiesReader.H"
-#include "polyDEM/System.hpp"
-#include "polyDEM/Engine.hpp"
-#include "polyDEM/Quaternion.hpp"
-#include "polyDEM/Error.hpp"
 #include "polyDEMConversions.H"
 
-namespace
-{
-using Foam::polyDEMConversions::toVec3;
-using Foam::polyDEMConversions::toVector;
-}
 
-
-void Foam::ibParticles::readFixed()
+Foam::dictionary Foam::ibParticles::backendSelection() const
 {
-    const List<dictionary> list(dict_.lookup("bodies"));
-    bodies_.setSize(list.size());
-    forAll(list, i)
+    dictionary selection(dict_);
+    // No DEM summary rows unless asked for (as demIbFoam has
+    // always run: postProcessing/demFoam holds the header only)
+    if (!selection.found("demSummary"))
     {
-        const dictionary& d = list[i];
-        ibBody& b = bodies_[i];
-        const word shape(d.get<word>("shape"));
-        if (shape != "sphere")
-        {
-            FatalIOErrorInFunction(d)
-                << "motion fixed supports shape sphere only (polyhedra come"
-                << " from the DEM: motion polyDEM)" << exit(FatalIOError);
-        }
-        b.id = i;
-        b.radius = d.get<scalar>("radius");
-        b.volume = 4.0/3.0*constant::mathematical::pi*pow3(b.radius);
-        b.position = d.get<vector>("position");
-        b.velocity = d.getOrDefault<vector>("velocity", Zero);
-        b.omega = d.getOrDefault<vector>("omega", Zero);
+        selection.add("demSummary", false);
     }
+    if (!dict_.found("demBackend") && dict_.found("motion"))
+    {
+        selection.set("demBackend", dict_.get<word>("motion"));
+    }
+    else if
+    (
+        dict_.found("motion")
+     && dict_.get<word>("motion") != dict_.get<word>("demBackend")
+    )
+    {
+        FatalIOErrorInFunction(dict_)
+            << "motion " << dict_.get<word>("motion") << " and demBackend "
+            << dict_.get<word>("demBackend") << " disagree in "
+            << dict_.name() << " (give demBackend only)"
+            << exit(FatalIOError);
+    }
+    return selection;
 }
 
 
-void Foam::ibParticles::readDEM()
+void Foam::ibParticles::readBodies()
 {
-    const polydem::Engine& engine = dem_->system().engine();
-    const polydem::SimulationConfig& cfg = dem_->input().config();
-    const polydem::ParticleState s = engine.particles();
+    demParticleArrays p;
+    backend_->particles(p);
 
-    bodies_.setSize(s.size());
+    bodies_.setSize(p.size());
     forAll(bodies_, i)
     {
         ibBody& b = bodies_[i];
-        b.id = label(s.id[i]);
-        b.position = toVector(s.position[i]);
-        b.velocity = toVector(s.velocity[i]);
-        b.omega = toVector(s.omega[i]);
-        b.radius = s.radius[i];
-        b.mass = s.mass[i];
+        b.id = p.id[i];
+        b.position = p.position[i];
+        b.velocity = p.velocity[i];
+        b.omega = p.omega[i];
+        b.radius = p.radius[i];
+        b.mass = p.mass[i];
         // The orientation (spheres too: written to forces.dat)
-        b.orientation = polyDEMConversions::orientationTensor(s.orientation[i]);
-        const polydem::ParticleType& type = cfg.types[s.type[i]];
-        if (type.shape == polydem::ShapeKind::polyhedron)
+        b.orientation = p.orientation[i];
+        const demShape& shape = shapes_[p.type[i]];
+        if (shape.polyhedron())
         {
-            const polydem::ConvexShape& shape = cfg.shapes[type.shapeIndex];
             b.polyhedron = true;
             b.volume = shape.volume;
-            const label nf = shape.faceNormals.size();
-            b.faceNormals.setSize(nf);
-            b.faceOffsets.setSize(nf);
-            for (label f = 0; f < nf; ++f)
-            {
-                b.faceNormals[f] = toVector(shape.faceNormals[f]);
-                b.faceOffsets[f] = shape.faceOffsets[f];
-            }
+            b.faceNormals = shape.normals;
+            b.faceOffsets = shape.offsets;
         }
         else
         {
             b.polyhedron = false;
             b.volume = 4.0/3.0*constant::mathematical::pi*pow3(b.radius);
+            b.faceNormals.clear();
+            b.faceOffsets.clear();
         }
     }
 }
@@ -101,14 +87,14 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
             IOobject::NO_WRITE
         )
     ),
-    motion_(dict_.get<word>("motion")),
     internalFluid_
     (
         dict_.getOrDefault<bool>("internalInertia", true)
       ? dict_.getOrDefault<word>("internalFluid", "integrated")
       : word("none")
     ),
-    g_(dict_.getOrDefault<vector>("g", vector(0, 0, -9.81)))
+    g_(Zero),
+    started_(false)
 {
     if
     (
@@ -122,53 +108,22 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
             << " (integrated | rigid | none)" << exit(FatalIOError);
     }
 
-    if (motion_ == "fixed")
+    // The DEM runs once, on the master, writing to the case folder
+    // (globalOutput); the other ranks get the bodies (scatterBodies)
+    const dictionary selection(backendSelection());
+    if (Pstream::master())
     {
-        readFixed();
-    }
-    else if (motion_ == "polyDEM")
-    {
-        demProperties_.reset
-        (
-            new IOdictionary
-            (
-                IOobject
-                (
-                    "demProperties",
-                    mesh.time().constant(),
-                    mesh,
-                    IOobject::MUST_READ,
-                    IOobject::NO_WRITE
-                )
-            )
-        );
-        // The DEM runs once, on the master, writing to the case folder;
-        // the other ranks get the bodies (scatterBodies)
-        if (Pstream::master())
+        backend_ = demBackend::New(mesh.time(), selection, true);
+        g_ = backend_->gravity();
+        shapes_.setSize(backend_->typeNames().size());
+        forAll(shapes_, t)
         {
-            try
-            {
-                dem_.reset
-                (
-                    new demSimulation(mesh.time(), *demProperties_, true)
-                );
-                g_ = toVector(dem_->input().config().gravity);
-            }
-            catch (const polydem::Error& err)
-            {
-                demPropertiesReader::reportError(err, *demProperties_);
-            }
-            readDEM();
+            backend_->typePolyhedron(t, shapes_[t]);
         }
-        Pstream::scatter(g_);
-        scatterBodies(bodies_);
+        readBodies();
     }
-    else
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Unknown motion " << motion_ << " (fixed | polyDEM)"
-            << exit(FatalIOError);
-    }
+    Pstream::scatter(g_);
+    scatterBodies(bodies_);
 
     previousVelocity_.setSize(bodies_.size());
     forAll(bodies_, i)
@@ -206,13 +161,8 @@ void Foam::ibParticles::evolve
     const List<vector>& L
 )
 {
-    if (motion_ == "fixed")
-    {
-        return;
-    }
-
     const scalar dt = mesh_.time().deltaTValue();
-    std::vector<polydem::Vec3> force(F.size()), torque(T.size());
+    List<vector> force(F.size()), torque(T.size());
     forAll(F, i)
     {
         const ibBody& b = bodies_[i];
@@ -238,23 +188,26 @@ void Foam::ibParticles::evolve
         {
             Fi += lubForce_[i];
         }
-        force[i] = toVec3(Fi);
-        torque[i] = toVec3(Ti);
+        force[i] = Fi;
+        torque[i] = Ti;
         previousVelocity_[i] = b.velocity;
     }
 
-    if (dem_)
+    if (Pstream::master())
     {
-        try
+        // The first handover goes through start() (the back end's restart
+        // order), the later ones through setForces()
+        if (started_)
         {
-            dem_->system().engine().setExternalForces(force, torque);
-            dem_->evolve();
+            backend_->setForces(force, torque);
         }
-        catch (const polydem::Error& err)
+        else
         {
-            demPropertiesReader::reportError(err, *demProperties_);
+            backend_->start(force, torque);
         }
+        backend_->evolve();
     }
+    started_ = true;
 
     // The engine's order may change (re-sorting): match by id
     Map<vector> oldU;
@@ -264,7 +217,7 @@ void Foam::ibParticles::evolve
     }
     if (Pstream::master())
     {
-        readDEM();
+        readBodies();
     }
     scatterBodies(bodies_);
     previousVelocity_.setSize(bodies_.size());
@@ -312,9 +265,9 @@ void Foam::ibParticles::writeForces
 
 void Foam::ibParticles::write()
 {
-    if (dem_ && mesh_.time().writeTime())
+    if (Pstream::master())
     {
-        dem_->write();
+        backend_->write();
     }
     writeState();
 }

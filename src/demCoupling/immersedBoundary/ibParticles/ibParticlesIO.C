@@ -21,7 +21,6 @@ Description
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
-#include "demSimulation.H"
 #include "dimensionedScalar.H"
 
 Foam::fileName Foam::ibParticles::statePath() const
@@ -34,7 +33,7 @@ Foam::fileName Foam::ibParticles::statePath() const
 void Foam::ibParticles::readState()
 {
     bool found = false;
-    if (Pstream::master() && dem_)
+    if (Pstream::master() && backend_->movesParticles())
     {
         const fileName f(statePath());
         if (isFile(f))
@@ -77,7 +76,13 @@ void Foam::ibParticles::readState()
 
 void Foam::ibParticles::writeState() const
 {
-    if (!Pstream::master() || !dem_ || !mesh_.time().writeTime())
+    // Bodies held in place carry nothing from step to step
+    if
+    (
+        !Pstream::master()
+     || !backend_->movesParticles()
+     || !mesh_.time().writeTime()
+    )
     {
         return;
     }
@@ -110,7 +115,7 @@ void Foam::ibParticles::updateLubrication()
     lubForce_ = lubrication_->forces
     (
         bodies_,
-        dem_ ? &dem_->system().config() : nullptr,
+        backend_.get(),
         mesh_.time().value(),
         mu_,
         mesh_.time().deltaTValue()

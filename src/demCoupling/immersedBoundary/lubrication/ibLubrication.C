@@ -4,87 +4,6 @@
 
 #include "ibLubrication.H"
 #include "mathematicalConstants.H"
-#include "polyDEM/Config.hpp"
-#include "polyDEM/MeshQueries.hpp"
-#include "polyDEM/Quaternion.hpp"
-
-namespace
-{
-Foam::vector toV(const polydem::Vec3& v)
-{
-    return Foam::vector(v.x, v.y, v.z);
-}
-polydem::Vec3 toP(const Foam::vector& v)
-{
-    return polydem::Vec3{v.x(), v.y(), v.z()};
-}
-
-//- Rigid motion of a wall at time t: x(t) = place(x(0)), and back
-struct WallFrame
-{
-    const polydem::WallMotion& m;
-    double t;
-
-    polydem::Quaternion R() const
-    {
-        const polydem::Vec3 a = m.axis/norm(m.axis);
-        return polydem::fromRotationVector((m.omega*t)*a);
-    }
-
-    Foam::vector forward(const Foam::vector& y) const
-    {
-        if (m.kind == polydem::MotionKind::translation)
-        {
-            return y + t*toV(m.velocity);
-        }
-        if (m.kind == polydem::MotionKind::rotation)
-        {
-            return toV(m.origin + polydem::rotate(R(), toP(y) - m.origin));
-        }
-        return y;
-    }
-
-    Foam::vector backward(const Foam::vector& x) const
-    {
-        if (m.kind == polydem::MotionKind::translation)
-        {
-            return x - t*toV(m.velocity);
-        }
-        if (m.kind == polydem::MotionKind::rotation)
-        {
-            return toV
-            (
-                m.origin + polydem::rotateInverse(R(), toP(x) - m.origin)
-            );
-        }
-        return x;
-    }
-
-    Foam::vector rotateNormal(const Foam::vector& n) const
-    {
-        if (m.kind == polydem::MotionKind::rotation)
-        {
-            return toV(polydem::rotate(R(), toP(n)));
-        }
-        return n;
-    }
-
-    //- Velocity of the wall's material point now at x
-    Foam::vector velocity(const Foam::vector& x) const
-    {
-        if (m.kind == polydem::MotionKind::translation)
-        {
-            return toV(m.velocity);
-        }
-        if (m.kind == polydem::MotionKind::rotation)
-        {
-            const Foam::vector a = toV(m.axis/norm(m.axis));
-            return (m.omega*a) ^ (x - toV(m.origin));
-        }
-        return Foam::Zero;
-    }
-};
-}
 
 
 Foam::ibLubrication::ibLubrication(const dictionary& dict)
@@ -150,7 +69,7 @@ Foam::scalar Foam::ibLubrication::coefficient
 Foam::List<Foam::vector> Foam::ibLubrication::forces
 (
     const UList<ibBody>& bodies,
-    const polydem::SimulationConfig* walls,
+    const demBackend* dem,
     scalar time,
     scalar mu,
     scalar dt
@@ -199,7 +118,7 @@ Foam::List<Foam::vector> Foam::ibLubrication::forces
         }
     }
 
-    if (!walls_ || !walls)
+    if (!walls_ || !dem)
     {
         return F;
     }
@@ -210,61 +129,18 @@ Foam::List<Foam::vector> Foam::ibLubrication::forces
         const scalar R = equivalentRadius(b);
         const scalar hc = cutoff_*R;
 
-        auto add = [&](const vector& n, scalar h, const vector& Uw)
+        // The DEM's walls at their position now, nearest points to the
+        // centre (planes, then triangle meshes)
+        for (const demWallPoint& w : dem->wallPoints(b.position, time))
         {
-            const scalar un = (b.velocity - Uw) & n;
-            const scalar c = coefficient(mu, R, R, h, b.mass, dt);
-            F[i] -= c*un*n;
-        };
-
-        for (const polydem::PlaneWall& pl : walls->planes)
-        {
-            const WallFrame frame{pl.motion, time};
-            const vector p = frame.forward(toV(pl.point));
-            vector n = frame.rotateNormal(toV(pl.normal));
-            n /= mag(n);
-            const scalar dist = (b.position - p) & n;
-            const scalar h = dist - R;
+            const scalar h = w.distance - R;
             if (h >= hc)
             {
                 continue;
             }
-            add(n, h, frame.velocity(b.position - dist*n));
-        }
-
-        for (const polydem::MeshWall& mw : walls->meshes)
-        {
-            const WallFrame frame{mw.motion, time};
-            const vector y = frame.backward(b.position);
-            scalar best = GREAT;
-            vector closest(Zero);
-            for (const auto& tri : mw.mesh.triangles)
-            {
-                const vector c = toV
-                (
-                    polydem::closestPointOnTriangle
-                    (
-                        toP(y),
-                        mw.mesh.points[tri[0]],
-                        mw.mesh.points[tri[1]],
-                        mw.mesh.points[tri[2]]
-                    )
-                );
-                const scalar dd = magSqr(y - c);
-                if (dd < best)
-                {
-                    best = dd;
-                    closest = c;
-                }
-            }
-            const scalar dist = Foam::sqrt(best);
-            if (best >= GREAT || dist - R >= hc || dist < VSMALL)
-            {
-                continue;
-            }
-            const vector c = frame.forward(closest);
-            const vector n = (b.position - c)/mag(b.position - c);
-            add(n, dist - R, frame.velocity(c));
+            const scalar un = (b.velocity - w.velocity) & w.normal;
+            const scalar c = coefficient(mu, R, R, h, b.mass, dt);
+            F[i] -= c*un*w.normal;
         }
     }
 

@@ -102,7 +102,7 @@ rho 1;
 
 with open("constant/ibProperties", "w") as f:
     f.write("""FoamFile { version 2.0; format ascii; class dictionary; object ibProperties; }
-motion fixed;
+demBackend fixed;
 directForcing
 {%s
     nSubSamples        %d;
