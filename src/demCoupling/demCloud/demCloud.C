@@ -108,6 +108,25 @@ Foam::demCloud::demCloud
 }
 
 
+Foam::demCloud::demCloud
+(
+    const volVectorField& U,
+    const volScalarField& p,
+    const demFreeSurface& fs
+)
+:
+    demCloud(U, p, fs.rho1)
+{
+    settings_.checkFreeSurface();
+    freeSurface_.reset(new demFreeSurface(fs));
+    submerged_.reset(new submergedVolume(mesh_, dict_));
+    forceContext_.setFreeSurface(freeSurface_());
+    Info<< "    free surface: phase densities " << fs.rho1 << ' ' << fs.rho2
+        << " kg/m3; rho and mu at a particle averaged over its volume"
+        << endl;
+}
+
+
 Foam::demCloud::~demCloud()
 {}
 
@@ -186,6 +205,25 @@ void Foam::demCloud::computeForces
     );
     const List<scalar> nuP(weights_.average(nu.primitiveField()));
 
+    // Free surface: mixture rho and mu = rho nu averaged over the particle's
+    // own volume, and the submerged part of the particle
+    List<scalar> rhoP, muP;
+    if (freeSurface_)
+    {
+        const demFreeSurface& fs = freeSurface_();
+        rhoP = weights_.average(fs.rho.primitiveField());
+        muP = weights_.average
+        (
+            scalarField(fs.rho.primitiveField()*nu.primitiveField())
+        );
+        submerged_->fractions
+        (
+            particles_, volume_, shapes_, weights_,
+            exchange_.voidfraction(), fs.alpha1, fs.g,
+            submergedFraction_, usedPlane_
+        );
+    }
+
     // Fields the force models need, built and sampled by each model
     forceContext_.setViscosity(nu, nuEff);
     for (forceModel& m : forces_)
@@ -224,6 +262,13 @@ void Foam::demCloud::computeForces
         ps.rho = rho_;
         ps.nu = nuP[i];
         ps.deltaT = mesh_.time().deltaTValue();
+        if (freeSurface_)
+        {
+            const scalar rhoMix = max(rhoP[i], VSMALL);
+            ps.rho = rhoMix;
+            ps.nu = muP[i]/rhoMix;
+            ps.submergedFraction = submergedFraction_[i];
+        }
 
         particleForce pf;
         for (const forceModel& m : forces_)
@@ -294,6 +339,18 @@ Foam::tmp<Foam::volScalarField> Foam::demCloud::KslByRho() const
 Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSourceByRho() const
 {
     return exchange_.explicitSourceByRho(rho_, settings_.implicitCoupling());
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::demCloud::implicitCoefficient() const
+{
+    return exchange_.implicitCoefficient(settings_.implicitCoupling());
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSource() const
+{
+    return exchange_.explicitSource(settings_.implicitCoupling());
 }
 
 

@@ -129,3 +129,16 @@ void Foam::demCloudSettings::readParticleShapes
             << endl;
     }
 }
+
+
+void Foam::demCloudSettings::checkFreeSurface() const
+{
+    if (formulation_ != couplingFormulation::setI)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "formulation setII in " << dict_.name() << " is not available"
+            << " with a free surface (demInterFoam): use setI" << nl
+            << "    (-eps grad p in the fluid, the pressure force on the"
+            << " particles alone)" << exit(FatalIOError);
+    }
+}

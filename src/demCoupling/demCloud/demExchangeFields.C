@@ -240,3 +240,34 @@ Foam::tmp<Foam::volVectorField> Foam::demExchangeFields::explicitSourceByRho
     }
     return fExchange_/rhoD;
 }
+
+
+Foam::tmp<Foam::volScalarField> Foam::demExchangeFields::implicitCoefficient
+(
+    const bool implicit
+) const
+{
+    if (implicit)
+    {
+        return tmp<volScalarField>::New("implicitCoefficient", Ksl_);
+    }
+    return tmp<volScalarField>::New
+    (
+        IOobject("implicitCoefficient", mesh_.time().timeName(), mesh_),
+        mesh_,
+        dimensionedScalar(Ksl_.dimensions(), Zero)
+    );
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::demExchangeFields::explicitSource
+(
+    const bool implicit
+) const
+{
+    if (implicit)
+    {
+        return KslUs_ + fExchange_;
+    }
+    return tmp<volVectorField>::New("explicitSource", fExchange_);
+}

@@ -21,7 +21,8 @@ Foam::forceModelContext::forceModelContext
     weights_(weights),
     previousUp_(previousUp),
     nuPtr_(nullptr),
-    nuEffPtr_(nullptr)
+    nuEffPtr_(nullptr),
+    freeSurfacePtr_(nullptr)
 {}
 
 

@@ -37,7 +37,11 @@ void Foam::pressureGradientForce::cacheFields(const bool store)
 
 void Foam::pressureGradientForce::addForce(const particleSample& s, particleForce& f) const
 {
-    const vector F = -s.Vp*s.rho*gradPP_[s.index];
+    // With a free surface p is the full pressure [Pa]: F = -Vp <grad p>
+    const vector F =
+        context_.freeSurface()
+      ? -s.Vp*gradPP_[s.index]
+      : -s.Vp*s.rho*gradPP_[s.index];
     if (context_.formulation() == couplingFormulation::setI)
     {
         f.Fparticle += F;

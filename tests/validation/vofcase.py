@@ -1,0 +1,196 @@
+"""Helpers for the demInterFoam validation cases (two-phase, water/air):
+uniform box meshes, an initial water field that accounts for axis-aligned
+blocks, the VOF dictionaries, the water-volume log. Uses hedracase."""
+import math
+import os
+import hedracase as hc
+
+RHO_W, RHO_A = 1000.0, 1.0
+NU_W, NU_A = 1e-6, 1.48e-5
+
+
+def overlap1(a0, a1, b0, b1):
+    return max(0.0, min(a1, b1) - max(a0, b0))
+
+
+def water_field(case, lo, hi, n, level, boxes=()):
+    """alpha.water with the free surface at z = level and the blocks of
+    'boxes' ((lo, hi) axis-aligned) excluded from the fluid: alpha is the
+    water part of the fluid in each cell, so the water volume is exactly
+    that of the flat surface minus the blocks' submerged volume."""
+    dx = [(hi[k] - lo[k]) / n[k] for k in range(3)]
+    vals = []
+    for k in range(n[2]):
+        z0 = lo[2] + k * dx[2]
+        z1 = z0 + dx[2]
+        for j in range(n[1]):
+            y0 = lo[1] + j * dx[1]
+            y1 = y0 + dx[1]
+            for i in range(n[0]):
+                x0 = lo[0] + i * dx[0]
+                x1 = x0 + dx[0]
+                V = dx[0] * dx[1] * dx[2]
+                below = dx[0] * dx[1] * overlap1(z0, z1, z0 - 1, level)
+                solid = solidBelow = 0.0
+                for bl, bh in boxes:
+                    a = overlap1(x0, x1, bl[0], bh[0]) * overlap1(y0, y1, bl[1], bh[1])
+                    solid += a * overlap1(z0, z1, bl[2], bh[2])
+                    solidBelow += a * overlap1(z0, z1, bl[2], min(bh[2], level))
+                fluid = V - solid
+                w = below - solidBelow
+                vals.append(min(max(w / fluid, 0.0), 1.0) if fluid > 1e-14 * V else 0.0)
+    body = ("dimensions [0 0 0 0 0 0 0];\ninternalField nonuniform List<scalar>\n"
+            f"{len(vals)}\n(\n" + "\n".join(f"{v:.17g}" for v in vals) + "\n);\n"
+            "boundaryField\n{\n    walls { type zeroGradient; }\n"
+            "    atmosphere { type inletOutlet; inletValue uniform 0; value uniform 0; }\n}\n")
+    hc.foamfile(os.path.join(case, "0/alpha.water"), "alpha.water", body,
+                cls="volScalarField")
+
+
+def closed_tank(case, lo, hi, n, open_top=False):
+    """Box tank of walls; open_top: the top is an atmosphere (total
+    pressure 0, air in and out), so the fluid volume in the tank may change
+    (a block that fills cells, where eps is clipped at alphaMin, changes the
+    solid volume the mesh holds as it moves)."""
+    sides = ["xmin", "xmax", "ymin", "ymax", "zmin"] + ([] if open_top else ["zmax"])
+    patches = {"walls": ("wall", sides)}
+    top = ""
+    if open_top:
+        patches["atmosphere"] = ("patch", ["zmax"])
+    hc.block_mesh(case, lo, hi, n, patches)
+    Utop = "    atmosphere { type pressureInletOutletVelocity; value uniform (0 0 0); }\n" if open_top else ""
+    ptop = "    atmosphere { type totalPressure; p0 uniform 0; value uniform 0; }\n" if open_top else ""
+    hc.foamfile(os.path.join(case, "0/U"), "U",
+                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+                "boundaryField\n{\n    walls { type noSlip; }\n" + Utop + "}\n", cls="volVectorField")
+    hc.foamfile(os.path.join(case, "0/p_rgh"), "p_rgh",
+                "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
+                "boundaryField\n{\n    walls { type fixedFluxPressure; value uniform 0; }\n" + ptop + "}\n",
+                cls="volScalarField")
+
+
+def vof_dicts(case, end, dt, write, maxCo=0.5, adjust=False, pTol=1e-12):
+    body = f"""application demInterFoam;
+startFrom latestTime;
+startTime 0;
+stopAt endTime;
+endTime {end};
+deltaT {dt};
+writeControl {"adjustableRunTime" if adjust else "runTime"};
+writeInterval {write};
+purgeWrite 0;
+writeFormat ascii;
+writePrecision 14;
+writeCompression off;
+timeFormat general;
+timePrecision 8;
+runTimeModifiable false;
+adjustTimeStep {"yes" if adjust else "no"};
+maxCo {maxCo};
+maxAlphaCo {maxCo};
+maxDeltaT 1;
+"""
+    hc.foamfile(os.path.join(case, "system/controlDict"), "controlDict", body)
+    hc.foamfile(os.path.join(case, "system/fvSchemes"), "fvSchemes", """
+ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    div(rhoPhi,U)  Gauss linearUpwind grad(U);
+    div(phi,alpha)  Gauss vanLeer;
+    div(phirb,alpha) Gauss linear;
+    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+""")
+    hc.foamfile(os.path.join(case, "system/fvSolution"), "fvSolution", f"""
+solvers
+{{
+    "alpha.water.*"
+    {{
+        nAlphaCorr 2; nAlphaSubCycles 1; cAlpha 1;
+        MULESCorr yes; nLimiterIter 5;
+        solver smoothSolver; smoother symGaussSeidel; tolerance 1e-12; relTol 0;
+    }}
+    "pcorr.*" {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol 0; }}
+    p_rgh {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol 0; }}
+    p_rghFinal {{ $p_rgh; relTol 0; }}
+    "U.*" {{ solver smoothSolver; smoother symGaussSeidel; tolerance 1e-12; relTol 0; }}
+}}
+PIMPLE
+{{
+    momentumPredictor no;
+    nOuterCorrectors 1;
+    nCorrectors 3;
+    nNonOrthogonalCorrectors 0;
+    pRefCell 0;
+    pRefValue 0;
+}}
+""")
+    hc.foamfile(os.path.join(case, "constant/transportProperties"), "transportProperties", f"""
+phases (water air);
+water {{ transportModel Newtonian; nu {NU_W}; rho {RHO_W}; }}
+air {{ transportModel Newtonian; nu {NU_A}; rho {RHO_A}; }}
+sigma 0.07;
+""")
+    hc.foamfile(os.path.join(case, "constant/turbulenceProperties"),
+                "turbulenceProperties", "simulationType laminar;\n")
+    hc.foamfile(os.path.join(case, "constant/g"), "g",
+                "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
+                cls="uniformDimensionedVectorField")
+
+
+def read_water(case):
+    """Rows of postProcessing/demInterFoam/<t0>/waterVolume.dat:
+    t, water volume, min alpha, max alpha, solid volume, nParticles."""
+    base = os.path.join(case, "postProcessing/demInterFoam")
+    rows = []
+    for t in sorted(os.listdir(base), key=float):
+        with open(os.path.join(base, t, "waterVolume.dat")) as f:
+            for line in f:
+                if line.startswith("#") or not line.strip():
+                    continue
+                rows.append([float(x) for x in line.split()])
+    return rows
+
+
+def dem_blocks(case, dt, density, blocks, size, tank, extra_types="", E=None):
+    """demProperties for boxes of the given size (x y z) placed by 'blocks'
+    (list of centre positions), in a tank of planes tank = (lo, hi)."""
+    lo, hi = tank
+    plist = "\n".join(f"            {{ position ({p[0]} {p[1]} {p[2]}); }}" for p in blocks)
+    walls = ""
+    for name, (pt, nv) in {
+        "floor": (lo, (0, 0, 1)), "xmin": (lo, (1, 0, 0)), "xmax": (hi, (-1, 0, 0)),
+        "ymin": (lo, (0, 1, 0)), "ymax": (hi, (0, -1, 0)), "top": (hi, (0, 0, -1)),
+    }.items():
+        walls += (f"    {name} {{ type plane; point ({pt[0]} {pt[1]} {pt[2]});"
+                  f" normal ({nv[0]} {nv[1]} {nv[2]}); material mat; }}\n")
+    body = f"""device cpu;
+timeStep {dt};
+gravity (0 0 -9.81);
+contactModel {{ law overlapVolume; volumetricStiffness 1e6; tangentialStiffnessRatio 0.2857; }}
+materials {{ mat {{ youngsModulus 1e8; poissonsRatio 0.3; density {density}; }} }}
+interactions {{ default {{ restitution 0.3; friction 0.3; }} }}
+particleTypes {{ block {{ shape polyhedron; material mat;
+    geometry {{ type box; size ({size[0]} {size[1]} {size[2]}); }} }} }}
+walls
+{{
+{walls}}}
+insertion
+{{
+    blocks
+    {{
+        type list;
+        particleType block;
+        particles
+        (
+{plist}
+        );
+    }}
+}}
+output {{ format ascii; vtk false; }}
+"""
+    hc.foamfile(os.path.join(case, "constant/demProperties"), "demProperties", body)
