@@ -54,12 +54,16 @@ struct PairProperties
     double friction = 0.5;        //!< Coulomb sliding friction
     double rollingFriction = 0;   //!< rolling-resistance coefficient mu_r
     double rollingDamping = 0.3;  //!< EPSD viscous damping ratio eta_r
+    double twistingFriction = 0;  //!< twisting (torsional) resistance coefficient mu_t
 };
 
 struct ContactModel
 {
     ContactLaw law = ContactLaw::hertzMindlin;
     RollingModel rolling = RollingModel::none;
+    //- Rolling-model option: twisting (torsional) resistance about the contact
+    //  normal, M_t = -mu_t R* Fn w_n/|w_n| (with the pairs' twistingFriction)
+    bool twisting = false;
     //- Linear law: normal stiffness [N/m]
     double normalStiffness = 0;
     //- Linear and overlapVolume laws: tangential / normal stiffness

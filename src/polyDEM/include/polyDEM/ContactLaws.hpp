@@ -1,83 +1,38 @@
-// polyDEM: normal/tangential/rolling contact laws for spheres, host+device.
+// polyDEM: the contact laws (host+device) and the one place that picks a law.
 //
-// Hertz-Mindlin (hertzMindlin)
-//     Fn = 4/3 E* sqrt(R*) d^(3/2) - gamma sqrt(m* Sn) vn,   Sn = 2 E* sqrt(R* d)
-//     Ft = -St xi - gamma sqrt(m* St) vt,  St = 8 G* sqrt(R* d),  |Ft| <= mu Fn
-//     Hertz (1882); Mindlin & Deresiewicz (1953); damping form of Tsuji et al. (1992)
-//     as used in LIGGGHTS. gamma is calibrated so that the simulated coefficient of
-//     restitution equals the input one (RestitutionCalibration).
-// Linear spring-dashpot (linearSpringDashpot)
-//     Fn = kn d - 2 zeta sqrt(m* kn) vn,  Ft = -kt xi - 2 zeta sqrt(m* kt) vt, |Ft| <= mu Fn
-//     Cundall & Strack (1979).
-// Overlap volume (overlapVolume), for polyhedra (and spheres among them)
-//     Fn = Kn V - 2 zeta sqrt(m* kn) vn,  kn = Kn A (A: contact area, so dFn/dd = kn)
-//     Ft = -kt xi - 2 zeta sqrt(m* kt) vt,  kt = ratio kn,  |Ft| <= mu Fn
-//     Blaze-DEM (Govender et al. 2016); normal n = S/|S| with S = -dV/dx (Feng 2021).
-//     Against a plane, Kn V n acting at the centroid of V is exactly conservative.
-// Rolling resistance
-//     constantTorque: M = -mu_r R* Fn w_rel/|w_rel|                 (Ai et al. 2011, type A)
-//     elasticPlastic: dM_k = -k_r w_rel dt, k_r = 2.25 kn mu_r^2 R*^2, |M_k| <= mu_r R* Fn,
-//                     M_d = -eta_r 2 sqrt(I_r k_r) w_rel while not fully mobilised
-//                                                                    (Ai et al. 2011, type C)
+// Each law lives in its own header under contactLaws/ with its coefficients,
+// springs and dashpots, elastic energy, critical time step and the impact used
+// to calibrate its damping for a restitution coefficient:
+//     HertzMindlin, LinearSpringDashpot, OverlapVolume.
+// The part every law shares is here (contactForce):
+//     Fn = max(0, Fn_elastic + cn vn)
+//     Ft = -kt xi - ct vt,  |Ft| <= mu Fn  (xi kept in the tangent plane, length preserved)
+//     + rolling and twisting resistance (contactLaws/RollingResistance.hpp).
 // The normal force is never attractive (no cohesion): Fn >= 0.
 #pragma once
 
 #include "polyDEM/Config.hpp"
 #include "polyDEM/Vec3.hpp"
+#include "polyDEM/contactLaws/ContactTypes.hpp"
+#include "polyDEM/contactLaws/HertzMindlin.hpp"
+#include "polyDEM/contactLaws/LinearSpringDashpot.hpp"
+#include "polyDEM/contactLaws/OverlapVolume.hpp"
+#include "polyDEM/contactLaws/RollingResistance.hpp"
 
 namespace polydem
 {
 
-//- Per material-pair constants of the law, precomputed on the host
-struct PairCoefficients
-{
-    double effectiveYoungs = 0;  //!< E*
-    double effectiveShear = 0;   //!< G*
-    double damping = 0;          //!< gamma (Hertz) or zeta (linear), from e
-    double friction = 0;
-    double rollingFriction = 0;
-    double rollingDamping = 0;
-};
-
-//- Law constants shared by all pairs
-struct LawParameters
-{
-    ContactLaw law = ContactLaw::hertzMindlin;
-    RollingModel rolling = RollingModel::none;
-    double normalStiffness = 0;        //!< linear law [N/m]
-    double volumetricStiffness = 0;    //!< overlapVolume law [N/m3]
-    double tangentialStiffnessRatio = 2.0 / 7.0;
-    double dt = 0;
-};
-
-//- Geometry and kinematics of one contact, from body 1's point of view
-struct ContactKinematics
-{
-    Vec3 normal;          //!< unit, from body 1 towards body 2
-    double overlap = 0;   //!< > 0 in contact [m]; overlapVolume: the volume [m3]
-    double contactArea = 0; //!< overlapVolume: |S| [m2]
-    double rStar = 0;     //!< effective radius
-    double mStar = 0;     //!< effective mass
-    double rollingInertia = 0; //!< I_r for the EPSD damping
-    Vec3 relVelocity;     //!< velocity of 1 relative to 2 at the contact point
-    Vec3 relOmega;        //!< omega_1 - omega_2
-};
-
-struct ContactResult
-{
-    Vec3 force;           //!< on body 1 (body 2 gets the opposite)
-    Vec3 rollingTorque;   //!< on body 1 (body 2 gets the opposite)
-    double normalForce = 0;
-};
-
-//- Evaluate the law and advance the tangential/rolling history in place.
-//  xi, mr: tangential spring displacement and rolling spring torque of this contact.
 #if defined(__CUDACC__)
-PD_HD inline ContactResult evaluateContact
+#define PD_LAW_INLINE PD_HD inline
 #else
 // Inlined into the kernels: a call per contact costs more than the law itself
-__attribute__((always_inline)) inline ContactResult evaluateContact
+#define PD_LAW_INLINE __attribute__((always_inline)) inline
 #endif
+
+//- Evaluate law Law and advance the tangential/rolling history in place.
+//  xi, mr: tangential spring displacement and rolling spring torque of this contact.
+template<class Law>
+PD_LAW_INLINE ContactResult contactForce
 (
     const LawParameters& law,
     const PairCoefficients& pc,
@@ -88,42 +43,14 @@ __attribute__((always_inline)) inline ContactResult evaluateContact
 {
     ContactResult res;
     const Vec3& n = k.normal;
-    const double d = k.overlap;
 
     // Approach speed (> 0 when closing) and tangential slip velocity
     const double vn = dot(k.relVelocity, n);
     const Vec3 vt = k.relVelocity - vn * n;
 
-    double kn, kt, fnElastic, cn, ct;
-    if (law.law == ContactLaw::hertzMindlin)
-    {
-        const double sqrtRd = sqrt(k.rStar * d);
-        const double Sn = 2.0 * pc.effectiveYoungs * sqrtRd;
-        const double St = 8.0 * pc.effectiveShear * sqrtRd;
-        fnElastic = (2.0 / 3.0) * Sn * d;
-        kn = Sn;
-        kt = St;
-        cn = pc.damping * sqrt(k.mStar * Sn);
-        ct = pc.damping * sqrt(k.mStar * St);
-    }
-    else if (law.law == ContactLaw::overlapVolume)
-    {
-        kn = law.volumetricStiffness * k.contactArea;
-        kt = law.tangentialStiffnessRatio * kn;
-        fnElastic = law.volumetricStiffness * d;
-        cn = 2.0 * pc.damping * sqrt(k.mStar * kn);
-        ct = 2.0 * pc.damping * sqrt(k.mStar * kt);
-    }
-    else
-    {
-        kn = law.normalStiffness;
-        kt = law.tangentialStiffnessRatio * kn;
-        fnElastic = kn * d;
-        cn = 2.0 * pc.damping * sqrt(k.mStar * kn);
-        ct = 2.0 * pc.damping * sqrt(k.mStar * kt);
-    }
+    const ContactSprings s = Law::springs(law, pc, k.rStar, k.overlap, k.contactArea, k.mStar);
 
-    double fn = fnElastic + cn * vn;
+    double fn = s.fnElastic + s.cn * vn;
     if (fn < 0)
     {
         fn = 0;
@@ -132,73 +59,82 @@ __attribute__((always_inline)) inline ContactResult evaluateContact
 
     // Tangential spring: keep it in the current tangent plane (the contact
     // frame rotates with the pair), preserving its length, then add the slip.
-    const double xiLen = norm(xi);
-    xi -= dot(xi, n) * n;
-    const double xiProj = norm(xi);
-    if (xiProj > 0)
+    // A fresh contact (xi = 0) has nothing to rotate.
+    const double xiLenSqr = normSqr(xi);
+    if (xiLenSqr > 0)
     {
-        xi *= xiLen / xiProj;
+        xi -= dot(xi, n) * n;
+        const double xiProjSqr = normSqr(xi);
+        if (xiProjSqr > 0)
+        {
+            xi *= sqrt(xiLenSqr / xiProjSqr);
+        }
     }
     xi += law.dt * vt;
 
-    Vec3 ft = -kt * xi - ct * vt;
-    const double ftMag = norm(ft);
+    Vec3 ft = -s.kt * xi - s.ct * vt;
+    const double ftMagSqr = normSqr(ft);
     const double ftMax = pc.friction * fn;
-    if (ftMag > ftMax)
+    if (ftMagSqr > ftMax * ftMax)
     {
         // Sliding: Coulomb cap; the spring holds the force it can carry
-        if (ftMag > 0)
-        {
-            ft *= ftMax / ftMag;
-        }
-        xi = (kt > 0) ? (-1.0 / kt) * ft : Vec3();
+        ft *= ftMax / sqrt(ftMagSqr);
+        xi = (s.kt > 0) ? (-1.0 / s.kt) * ft : Vec3();
     }
 
     res.force = -fn * n + ft;
 
-    // Overlap volume (overlapVolume), for polyhedra (and spheres among them)
-//     Fn = Kn V - 2 zeta sqrt(m* kn) vn,  kn = Kn A (A: contact area, so dFn/dd = kn)
-//     Ft = -kt xi - 2 zeta sqrt(m* kt) vt,  kt = ratio kn,  |Ft| <= mu Fn
-//     Blaze-DEM (Govender et al. 2016); normal n = S/|S| with S = -dV/dx (Feng 2021).
-//     Against a plane, Kn V n acting at the centroid of V is exactly conservative.
-// Rolling resistance: only the relative rolling (tangential) part of omega
     if (law.rolling != RollingModel::none && pc.rollingFriction > 0)
     {
-        const Vec3 wr = k.relOmega - dot(k.relOmega, n) * n;
-        const double mMax = pc.rollingFriction * k.rStar * fn;
-        if (law.rolling == RollingModel::constantTorque)
-        {
-            const double w = norm(wr);
-            if (w > 0)
-            {
-                // Limit so that the torque cannot reverse the relative rolling
-                // within one step (prevents chatter at rest)
-                const double mStop = (k.rollingInertia > 0) ? k.rollingInertia * w / law.dt : mMax;
-                const double m = mMax < mStop ? mMax : mStop;
-                res.rollingTorque = (-m / w) * wr;
-            }
-        }
-        else
-        {
-            const double kr = 2.25 * kn * pc.rollingFriction * pc.rollingFriction * k.rStar * k.rStar;
-            mr -= dot(mr, n) * n;
-            mr -= (kr * law.dt) * wr;
-            const double mLen = norm(mr);
-            Vec3 md;
-            if (mLen > mMax)
-            {
-                mr *= (mLen > 0 ? mMax / mLen : 0.0);
-            }
-            else
-            {
-                const double cr = pc.rollingDamping * 2.0 * sqrt(k.rollingInertia * kr);
-                md = -cr * wr;
-            }
-            res.rollingTorque = mr + md;
-        }
+        res.rollingTorque = rollingTorque(law, pc, k, s.kn, fn, mr);
     }
-
+    if (law.twisting && pc.twistingFriction > 0)
+    {
+        res.rollingTorque += twistingTorque(law, pc, k, fn);
+    }
     return res;
+}
+
+//- Run f(Law{}) with the law type of a run-time choice: the one switch over laws
+template<class F>
+inline auto withContactLaw(ContactLaw law, F&& f)
+{
+    switch (law)
+    {
+        case ContactLaw::linearSpringDashpot: return f(LinearSpringDashpot{});
+        case ContactLaw::overlapVolume: return f(OverlapVolume{});
+        case ContactLaw::hertzMindlin: break;
+    }
+    return f(HertzMindlin{});
+}
+
+//- Law constants of a contact model at time step dt
+inline LawParameters lawParameters(const ContactModel& c, double dt)
+{
+    LawParameters p;
+    p.law = c.law;
+    p.rolling = c.rolling;
+    p.twisting = c.twisting;
+    p.normalStiffness = c.normalStiffness;
+    p.tangentialStiffnessRatio = c.tangentialStiffnessRatio;
+    p.volumetricStiffness = c.volumetricStiffness;
+    p.dt = dt;
+    return p;
+}
+
+//- Run-time law choice (host code, tests): same arithmetic as contactForce<Law>
+PD_HD inline ContactResult evaluateContact
+(
+    const LawParameters& law,
+    const PairCoefficients& pc,
+    const ContactKinematics& k,
+    Vec3& xi,
+    Vec3& mr
+)
+{
+    if (law.law == ContactLaw::hertzMindlin) return contactForce<HertzMindlin>(law, pc, k, xi, mr);
+    if (law.law == ContactLaw::overlapVolume) return contactForce<OverlapVolume>(law, pc, k, xi, mr);
+    return contactForce<LinearSpringDashpot>(law, pc, k, xi, mr);
 }
 
 //- Elastic energy stored in the normal spring of a contact (for energy checks)
@@ -212,9 +148,9 @@ PD_HD inline double normalElasticEnergy
 {
     if (law.law == ContactLaw::hertzMindlin)
     {
-        return (8.0 / 15.0) * pc.effectiveYoungs * sqrt(rStar) * pow(overlap, 2.5);
+        return HertzMindlin::elasticEnergy(law, pc, rStar, overlap);
     }
-    return 0.5 * law.normalStiffness * overlap * overlap;
+    return LinearSpringDashpot::elasticEnergy(law, pc, rStar, overlap);
 }
 
 } // namespace polydem

@@ -1,5 +1,6 @@
 #include "polyDEM/RestitutionCalibration.hpp"
 
+#include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Error.hpp"
 
 #include <cmath>
@@ -10,19 +11,10 @@ namespace polydem
 namespace
 {
 
-// Dimensionless contact force (positive = repulsive), clamped at zero
+// Dimensionless contact force of the law (positive = repulsive), clamped at zero
 double force(ContactLaw law, double damping, double s, double v)
 {
-    double f;
-    if (law == ContactLaw::hertzMindlin)
-    {
-        f = std::pow(s, 1.5) + damping * std::sqrt(1.5) * std::pow(s, 0.25) * v;
-    }
-    else
-    {
-        f = s + 2.0 * damping * v;
-    }
-    return f > 0 ? f : 0;
+    return withContactLaw(law, [&](auto L) { return decltype(L)::restitutionForce(damping, s, v); });
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "polyDEM/System.hpp"
 
+#include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Error.hpp"
 
 #include <dlfcn.h>
@@ -93,6 +94,8 @@ void System::checkConfig(const SimulationConfig& c)
         if (!(p.friction >= 0)) throw Error("friction must be >= 0", f, "interactions/friction");
         if (!(p.rollingFriction >= 0))
             throw Error("rolling friction must be >= 0", f, "interactions/rollingFriction");
+        if (!(p.twistingFriction >= 0))
+            throw Error("twisting friction must be >= 0", f, "interactions/twistingFriction");
     }
     if (c.contact.law == ContactLaw::linearSpringDashpot && !(c.contact.normalStiffness > 0))
     {
@@ -240,40 +243,20 @@ ParticleState System::makeSpheres
 
 double System::criticalTimeStep(const ParticleState& p) const
 {
+    const LawParameters law = lawParameters(config_.contact, config_.timeStep);
     double limit = 1e300;
     for (std::size_t i = 0; i < p.size(); ++i)
     {
         const auto& type = config_.types[p.type[i]];
         const auto& mat = config_.materials[type.material];
         const double r = p.radius[i];
-        if (config_.contact.law == ContactLaw::hertzMindlin)
-        {
-            // Rayleigh time: the time a Rayleigh surface wave takes to cross the
-            // particle; DEM practice keeps dt at or below 20 % of it.
-            const double G = mat.youngsModulus / (2 * (1 + mat.poissonsRatio));
-            const double nu = mat.poissonsRatio;
-            const double tR = M_PI * r * std::sqrt(mat.density / G) / (0.1631 * nu + 0.8766);
-            limit = std::min(limit, 0.2 * tR);
-        }
-        else
-        {
-            // Undamped contact duration of two equal particles: pi sqrt(m*/k);
-            // resolve it with at least 10 steps. Volumetric law: k = Kn A with
-            // A the largest contact area (largest face, or the sphere's section).
-            double k = config_.contact.normalStiffness;
-            if (config_.contact.law == ContactLaw::overlapVolume)
-            {
-                double area = M_PI * r * r;
-                if (type.shape == ShapeKind::polyhedron)
-                {
-                    area = largestFaceArea(config_.shapes[type.shapeIndex]);
-                }
-                k = config_.contact.volumetricStiffness * area;
-            }
-            const double mStar = 0.5 * p.mass[i];
-            const double tc = M_PI * std::sqrt(mStar / k);
-            limit = std::min(limit, tc / 10);
-        }
+        // Largest contact area the particle can make (volumetric law)
+        const double area = type.shape == ShapeKind::polyhedron
+                          ? largestFaceArea(config_.shapes[type.shapeIndex]) : M_PI * r * r;
+        const double dtMax = withContactLaw(config_.contact.law, [&](auto L) {
+            return decltype(L)::criticalTimeStep(law, mat, r, p.mass[i], area);
+        });
+        limit = std::min(limit, dtMax);
     }
     return limit;
 }
@@ -309,8 +292,8 @@ void System::checkStability(const ParticleState& particles, const std::string& w
         (
             "time step " + str(config_.timeStep) + " s is above the contact-stability limit "
             + str(dtMax) + " s for " + what + " ("
-            + (config_.contact.law == ContactLaw::hertzMindlin
-               ? "20 % of the Rayleigh time" : "1/10 of the contact duration")
+            + withContactLaw(config_.contact.law, [](auto L) {
+                   return std::string(decltype(L)::criticalTimeStepRule()); })
             + "): reduce timeStep, or soften the material",
             config_.source, "timeStep"
         );

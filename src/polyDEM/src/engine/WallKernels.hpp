@@ -1,0 +1,407 @@
+// polyDEM engine: the per-particle force sum (gravity, external, the pairs
+// it is body 1 and body 2 of) and the wall contacts: planes through per-particle
+// candidate lists, triangle meshes in a kernel of their own.
+// Part of ThrustEngine.inl: compiled once per back end inside
+// namespace polydem::PD_BACKEND_NS (defined by the including back end).
+#pragma once
+
+#include "Integration.hpp"
+#include "PairKernels.hpp"
+#include "ShapePairs.hpp"
+
+namespace polydem
+{
+namespace PD_BACKEND_NS
+{
+
+//- Contact of particle i with a wall under law Law (shared by planes and meshes)
+template<class Law, class Kind>
+struct WallContact
+{
+    ParticleView p;
+    LawView law;
+
+    PD_HD const PairCoefficients& coefficients(int i, int material) const
+    {
+        return law.nMaterials == 1 ? law.pairs[0] : law.pair(law.typeMaterial[p.type[i]], material);
+    }
+
+    //- Point contact of a sphere (Hertz, linear law) at wallPoint
+    PD_HD void point
+    (
+        int i, int material, const Vec3& wallPoint, const Vec3& wallVel, const Vec3& wallOmega,
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
+    ) const
+    {
+        const Vec3 x = p.pos[i];
+        const double r = p.radius[i];
+        const Vec3 d = wallPoint - x;
+        const double dist = norm(d);
+        ContactKinematics k;
+        k.normal = (1.0 / dist) * d;
+        k.overlap = r - dist;
+        k.rStar = r;
+        k.mStar = p.mass[i];
+        if (needsResistanceInertia(law.law))
+        {
+            k.rollingInertia = rollingInertiaOf(p.inertia[i].x, p.mass[i], r);
+            k.spinInertia = p.inertia[i].x;
+        }
+        const Vec3 arm = (r - 0.5 * k.overlap) * k.normal;
+        k.relVelocity = p.vel[i] + cross(p.omega[i], arm) - wallVel;
+        k.relOmega = p.omega[i] - wallOmega;
+        const ContactResult res = contactForce<Law>(law.law, coefficients(i, material), k, xi, mr);
+        F += res.force;
+        T += cross(arm, res.force) + res.rollingTorque;
+    }
+
+    //- Volumetric contact. ov.normal points from the wall into the particle;
+    //  ov.centroid is the contact point.
+    PD_HD void volumetric
+    (
+        int i, int material, const OverlapResult& ov, const Vec3& wallVel, const Vec3& wallOmega,
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
+    ) const
+    {
+        const Vec3 x = p.pos[i];
+        ContactKinematics k;
+        k.normal = -ov.normal;
+        k.overlap = ov.volume;
+        k.contactArea = ov.contactArea;
+        k.rStar = p.radius[i];
+        k.mStar = p.mass[i];
+        if (needsResistanceInertia(law.law))
+        {
+            k.rollingInertia = rollingInertiaOf(p.inertia[i].x, p.mass[i], p.radius[i]);
+            k.spinInertia = p.inertia[i].x;
+        }
+        const Vec3 arm = ov.centroid - x;
+        k.relVelocity = p.vel[i] + cross(p.omega[i], arm) - wallVel;
+        k.relOmega = p.omega[i] - wallOmega;
+        const ContactResult res = contactForce<Law>(law.law, coefficients(i, material), k, xi, mr);
+        F += res.force;
+        T += cross(arm, res.force) + res.rollingTorque;
+    }
+};
+
+//- Reset a wall spring, writing only when there is something to reset
+PD_HD inline void clearSpring(Vec3& xi)
+{
+    if (xi.x != 0 || xi.y != 0 || xi.z != 0) xi = Vec3();
+}
+
+//- Per particle: gravity + external + its pairs (body 1 first, in list order,
+//  then body 2, in pair order: deterministic whatever the thread schedule) +
+//  its plane candidates; with Kick also the second half kick of the step.
+//  OwnFromPairs: body 1's sums are summed here from the pairs (per-pair kernel)
+//  instead of taken from PairKernel's ownForce/ownTorque; the order is the same.
+template<class Law, class Kind, bool Kick, bool OwnFromPairs>
+struct ParticleForces
+{
+    WallContact<Law, Kind> wall;
+    Vec3 gravity;
+    double time;
+    double dt;
+
+    PairLists pairs;
+    const Vec3* ownForce;
+    const Vec3* ownTorque;
+    const int* inStart;     //!< n + 1: pairs of which the particle is body 2
+    const int* inPair;
+    int* contactCount;
+
+    const PlaneDevice* planes;
+    const int* planeStart;  //!< n + 1: plane candidates of each particle
+    const int* planePlane;
+    Vec3* planeXi;
+    Vec3* planeMr;          //!< null without a rolling model
+    int* wallContactCount;
+
+    PD_HD void operator()(int i) const
+    {
+        const ParticleView& p = wall.p;
+        Vec3 F = p.mass[i] * gravity;
+        Vec3 T;
+        if (p.extForce) F += p.extForce[i];
+        if (p.extTorque) T += p.extTorque[i];
+
+        int touching = 0;
+        {
+            Vec3 Fo, To;
+            const int end = pairs.start[i + 1];
+            for (int k = pairs.start[i]; k < end; ++k)
+            {
+                if (!pairs.touching[k]) continue;
+                ++touching;
+                if (OwnFromPairs)
+                {
+                    Fo += pairs.force[k];
+                    To += pairs.torqueA[k];
+                }
+            }
+            if (!OwnFromPairs)
+            {
+                Fo = ownForce[i];
+                To = ownTorque[i];
+            }
+            F += Fo;
+            T += To;
+        }
+        const int inEnd = inStart[i + 1];
+        for (int l = inStart[i]; l < inEnd; ++l)
+        {
+            const int k = inPair[l];
+            if (!pairs.touching[k]) continue;
+            ++touching;
+            F -= pairs.force[k];
+            T += pairs.torqueB[k];
+        }
+        contactCount[i] = touching;
+
+        int walls = 0;
+        const Vec3 x = p.pos[i];
+        const double r = p.radius[i];
+        const int cEnd = planeStart[i + 1];
+        for (int c = planeStart[i]; c < cEnd; ++c)
+        {
+            const PlaneDevice& pl = planes[planePlane[c]];
+            Vec3 n = pl.normal, p0 = pl.point;
+            if (pl.motion.kind != int(MotionKind::fixed))
+            {
+                const Quaternion R = pl.motion.rotationAt(time);
+                n = pl.motion.directionToWorld(pl.normal, R);
+                p0 = pl.motion.toWorld(pl.point, time, R);
+            }
+            const double h = dot(x - p0, n);
+            Vec3 noRolling;
+            Vec3& mr = planeMr ? planeMr[c] : noRolling;
+            if (h >= r)
+            {
+                clearSpring(planeXi[c]);
+                if (planeMr) clearSpring(mr);
+                continue;
+            }
+            const Vec3 foot = x - h * n;
+            if constexpr (Law::volumetric)
+            {
+                const OverlapResult ov = planeOverlap<Kind>(p, wall.law, i, p0, n, foot);
+                if (!ov.touching)
+                {
+                    clearSpring(planeXi[c]);
+                    if (planeMr) clearSpring(mr);
+                    continue;
+                }
+                ++walls;
+                wall.volumetric(i, pl.material, ov, pl.motion.velocityAt(ov.centroid),
+                                pl.motion.angularVelocity(), planeXi[c], mr, F, T);
+                continue;
+            }
+            ++walls;
+            wall.point(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
+                       planeXi[c], mr, F, T);
+        }
+        wallContactCount[i] = walls;
+
+        p.force[i] = F;
+        p.torque[i] = T;
+        if (Kick) finalKick<Kind>(p, wall.law.typeShape, dt, i, F, T);
+    }
+};
+
+//- Triangle-mesh walls, after ParticleForces: adds to force/torque and the
+//  wall-contact count; with Kick also the second half kick of the step
+template<class Law, class Kind, bool Kick>
+struct MeshWallKernel
+{
+    WallContact<Law, Kind> wall;
+    double time;
+    double dt;
+    const MeshDevice* meshes;
+    int nMeshes;
+    const Vec3* triA;
+    const Vec3* triB;
+    const Vec3* triC;
+    const int* cellStart;
+    const int* cellTriangles;
+    MeshSlot* meshSlots;     //!< per particle maxMeshSlots slots
+    int* wallContactCount;
+
+    PD_HD void operator()(int i) const
+    {
+        const ParticleView& p = wall.p;
+        const LawView& law = wall.law;
+        Vec3 F = p.force[i];
+        Vec3 T = p.torque[i];
+        int walls = wallContactCount[i];
+        const Vec3 xi_ = p.pos[i];
+        const double ri = p.radius[i];
+    MeshSlot* slots = meshSlots + size_t(i) * maxMeshSlots;
+        MeshSlot next[maxMeshSlots];
+        int nNext = 0;
+
+        for (int w = 0; w < nMeshes; ++w)
+        {
+            const MeshDevice& mesh = meshes[w];
+            const Quaternion R = mesh.motion.rotationAt(time);
+            const Vec3 y = mesh.motion.toBody(xi_, time, R);
+            const Vec3 g = (y - mesh.gridOrigin) / mesh.cellSize;
+            const int cx = int(floor(g.x)), cy = int(floor(g.y)), cz = int(floor(g.z));
+            if (cx < 0 || cy < 0 || cz < 0 || cx >= mesh.nx || cy >= mesh.ny || cz >= mesh.nz) continue;
+            const int cell = mesh.firstCell + (cz * mesh.ny + cy) * mesh.nx + cx;
+
+            const int shapeI = law.typeShape[p.type[i]];
+            if (Kind::polyhedra && Law::volumetric && shapeI >= 0)
+            {
+                // Polyhedron: every triangle's prism adds its own overlap
+                // (coplanar neighbours partition the wall, so nothing is counted twice)
+                const ConvexPolyhedron P = law.shapes.shape(shapeI);
+                const Quaternion qBody = conjugate(R) * p.q[i];
+                for (int t = cellStart[cell]; t < cellStart[cell + 1] && nNext < maxMeshSlots; ++t)
+                {
+                    const int tri = cellTriangles[t];
+                    const int g0 = mesh.firstTriangle + tri;
+                    const OverlapResult ovBody = polyhedronTriangleOverlap(P, y, qBody, triA[g0], triB[g0], triC[g0]);
+                    if (!ovBody.touching) continue;
+                    OverlapResult ov = ovBody;
+                    ov.normal = mesh.motion.directionToWorld(ovBody.normal, R);
+                    ov.centroid = mesh.motion.toWorld(ovBody.centroid, time, R);
+                    Vec3 sxi, smr;
+                    for (int s2 = 0; s2 < maxMeshSlots; ++s2)
+                    {
+                        if (slots[s2].mesh == w && slots[s2].triangle == tri)
+                        {
+                            sxi = slots[s2].xi;
+                            smr = slots[s2].mr;
+                            break;
+                        }
+                    }
+                    ++walls;
+                    wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
+                                          mesh.motion.angularVelocity(), sxi, smr, F, T);
+                    MeshSlot& ns = next[nNext++];
+                    ns.mesh = w;
+                    ns.triangle = tri;
+                    ns.normal = -ov.normal;
+                    ns.xi = sxi;
+                    ns.mr = smr;
+                }
+                continue;
+            }
+
+            // Candidates: every triangle within reach
+            Vec3 cPoint[maxMeshCandidates];
+            double cDist[maxMeshCandidates];
+            int cTri[maxMeshCandidates], cFeature[maxMeshCandidates];
+            int nc = 0;
+            for (int t = cellStart[cell]; t < cellStart[cell + 1]; ++t)
+            {
+                const int tri = cellTriangles[t];
+                const int g0 = mesh.firstTriangle + tri;
+                int feature;
+                const Vec3 cp = detail::closestPointOnTriangle(y, triA[g0], triB[g0], triC[g0], feature);
+                const double dd = norm(cp - y);
+                if (dd >= ri || dd <= 0) continue;
+                // Keep the nearest ones, sorted by feature (faces first) then distance
+                int pos = nc < maxMeshCandidates ? nc : maxMeshCandidates - 1;
+                if (nc == maxMeshCandidates)
+                {
+                    const bool better = feature < cFeature[pos] || (feature == cFeature[pos] && dd < cDist[pos]);
+                    if (!better) continue;
+                }
+                else
+                {
+                    ++nc;
+                }
+                while (pos > 0 && (feature < cFeature[pos - 1] || (feature == cFeature[pos - 1] && dd < cDist[pos - 1])))
+                {
+                    cPoint[pos] = cPoint[pos - 1]; cDist[pos] = cDist[pos - 1];
+                    cTri[pos] = cTri[pos - 1]; cFeature[pos] = cFeature[pos - 1];
+                    --pos;
+                }
+                cPoint[pos] = cp; cDist[pos] = dd; cTri[pos] = tri; cFeature[pos] = feature;
+            }
+
+            // Accept face contacts; an edge or vertex contact is an artefact of the
+            // tessellation when it lies on an accepted face's plane or on an
+            // accepted contact point (the same touch seen by a neighbour triangle).
+            int accepted[maxMeshCandidates];
+            int na = 0;
+            const double tol = 1e-9 * ri + 1e-6 * ri;
+            for (int c = 0; c < nc; ++c)
+            {
+                bool duplicate = false;
+                for (int a = 0; a < na && !duplicate; ++a)
+                {
+                    const int q = accepted[a];
+                    if (norm(cPoint[c] - cPoint[q]) < tol) duplicate = true;
+                    else if (cFeature[c] != detail::featureFace && cFeature[q] == detail::featureFace)
+                    {
+                        const Vec3 nq = (y - cPoint[q]) / cDist[q];
+                        if (fabs(dot(cPoint[c] - cPoint[q], nq)) < tol) duplicate = true;
+                    }
+                }
+                if (!duplicate) accepted[na++] = c;
+            }
+
+            for (int a = 0; a < na && nNext < maxMeshSlots; ++a)
+            {
+                const int c = accepted[a];
+                const Vec3 nBody = (cPoint[c] - y) / cDist[c];
+                const Vec3 nWorld = mesh.motion.directionToWorld(nBody, R);
+                // The spring of this touch: same triangle, else a neighbour
+                // triangle touched last step with nearly the same normal
+                Vec3 sxi, smr;
+                int found = -1;
+                for (int s = 0; s < maxMeshSlots; ++s)
+                {
+                    if (slots[s].mesh == w && slots[s].triangle == cTri[c]) { found = s; break; }
+                }
+                if (found < 0)
+                {
+                    for (int s = 0; s < maxMeshSlots; ++s)
+                    {
+                        if (slots[s].mesh == w && dot(slots[s].normal, nWorld) > 0.99) { found = s; break; }
+                    }
+                }
+                if (found >= 0)
+                {
+                    sxi = slots[found].xi;
+                    smr = slots[found].mr;
+                }
+                const Vec3 wallPoint = mesh.motion.toWorld(cPoint[c], time, R);
+                ++walls;
+                if constexpr (Law::volumetric)
+                {
+                    // A sphere under the volumetric law: the cap cut by the
+                    // tangent plane at the closest point
+                    const OverlapResult ov = sphereHalfSpaceOverlap(xi_, ri, wallPoint, -nWorld);
+                    wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
+                                          mesh.motion.angularVelocity(), sxi, smr, F, T);
+                }
+                else
+                {
+                    wall.point(i, mesh.material, wallPoint, mesh.motion.velocityAt(wallPoint),
+                                mesh.motion.angularVelocity(), sxi, smr, F, T);
+                }
+                MeshSlot& ns = next[nNext++];
+                ns.mesh = w;
+                ns.triangle = cTri[c];
+                ns.normal = nWorld;
+                ns.xi = sxi;
+                ns.mr = smr;
+            }
+        }
+        for (int s = 0; s < maxMeshSlots; ++s)
+        {
+            if (s < nNext) slots[s] = next[s];
+            else slots[s].mesh = -1;
+        }
+        wallContactCount[i] = walls;
+        p.force[i] = F;
+        p.torque[i] = T;
+        if (Kick) finalKick<Kind>(p, law.typeShape, dt, i, F, T);
+    }
+};
+
+} // namespace PD_BACKEND_NS
+} // namespace polydem
