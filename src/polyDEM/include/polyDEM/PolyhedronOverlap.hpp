@@ -33,9 +33,10 @@
 //
 // Walls: a plane is treated as the solid half-space below it and a wall
 // triangle as the solid prism below it (the half-space restricted to the
-// triangle's normal prism, depth 2 r_B + penetration); both are built as small
-// convex polyhedra on the stack and go through the same clipper, so the
-// volume, centroid and normal are exact for them. Limit of the triangle
+// triangle's normal prism). Only the particle's faces are clipped, by the
+// wall plane and the prism's side planes (halfSpaceClipOverlap); volume and
+// centroid follow from fields that vanish on the wall's own faces, so the
+// wall is never built as a polyhedron. Exact to round-off. Limit of the triangle
 // model: the volumes of a particle over several triangles add, which is exact
 // for coplanar neighbours and flat or convex meshes seen from the fluid side,
 // but counts the wedge twice at a concave edge (an inside corner of a
@@ -91,7 +92,6 @@ struct BoundaryIntegrals
     Vec3 twiceAreaA;          //!< 2 x area vector of A's clipped faces
     Vec3 twiceAreaB;          //!< 2 x area vector of B's clipped faces
     double twiceSurface = 0;  //!< 2 x area of all clipped faces
-    Vec3 surfaceMoment;       //!< sum 2 a_t (q0 + q1 + q2): surface centroid = / (3 twiceSurface)
 };
 
 PD_INLINE void addPolygon(BoundaryIntegrals& acc, const Vec3* poly, int n, bool fromA)
@@ -108,15 +108,13 @@ PD_INLINE void addPolygon(BoundaryIntegrals& acc, const Vec3* poly, int n, bool 
         const Vec3 q1 = poly[i] - acc.origin;
         const Vec3 q2 = poly[i + 1] - acc.origin;
         const double v6 = dot(q0, cross(q1, q2));
-        const Vec3 sum = q0 + q1 + q2;
         acc.sixVolume += v6;
-        acc.volumeMoment += v6 * sum;
-        const Vec3 a2 = cross(q1 - q0, q2 - q0);
-        const double a2n = norm(a2);
-        twiceArea += a2;
-        acc.twiceSurface += a2n;
-        acc.surfaceMoment += a2n * sum;
+        acc.volumeMoment += v6 * (q0 + q1 + q2);
+        twiceArea += cross(q1 - q0, q2 - q0);
     }
+    // A convex planar polygon: its fan triangles' area vectors are parallel, so
+    // its area is the length of their sum (one square root per polygon)
+    acc.twiceSurface += norm(twiceArea);
     if (fromA)
     {
         acc.twiceAreaA += twiceArea;
@@ -355,76 +353,6 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     return r;
 }
 
-//- A small convex polyhedron built on the stack (wall box or prism)
-struct LocalPolyhedron
-{
-    Vec3 vertices[8];
-    Vec3 normals[6];
-    double offsets[6];
-    int faceStart[7];
-    int faceVertex[24];
-    PolyhedronEdge edges[12];
-    ConvexPolyhedron shape;
-
-    PD_INLINE void finish(int nV, int nF, double radius, double volume)
-    {
-        for (int f = 0; f < nF; ++f)
-        {
-            const Vec3& p0 = vertices[faceVertex[faceStart[f]]];
-            const Vec3& p1 = vertices[faceVertex[faceStart[f] + 1]];
-            const Vec3& p2 = vertices[faceVertex[faceStart[f] + 2]];
-            Vec3 n = cross(p1 - p0, p2 - p0);
-            n = n / norm(n);
-            normals[f] = n;
-            offsets[f] = dot(n, p0);
-        }
-        shape.nVertices = nV;
-        shape.nFaces = nF;
-        shape.nEdges = 0; // not needed: walls never use the edge axes
-        shape.vertices = vertices;
-        shape.faceNormals = normals;
-        shape.faceOffsets = offsets;
-        shape.faceStart = faceStart;
-        shape.faceVertex = faceVertex;
-        shape.edges = edges;
-        shape.boundingRadius = radius;
-        shape.volume = volume;
-    }
-};
-
-//- Box centre c, right-handed unit axes e1, e2, e3, half sizes h
-PD_INLINE void makeBox(LocalPolyhedron& box, const Vec3& c, const Vec3& e1, const Vec3& e2,
-                       const Vec3& e3, const Vec3& h)
-{
-    for (int i = 0; i < 8; ++i)
-    {
-        const double sx = (i & 1) ? 1.0 : -1.0;
-        const double sy = (i & 2) ? 1.0 : -1.0;
-        const double sz = (i & 4) ? 1.0 : -1.0;
-        box.vertices[i] = c + (sx * h.x) * e1 + (sy * h.y) * e2 + (sz * h.z) * e3;
-    }
-    // Faces -x, +x, -y, +y, -z, +z, counter-clockwise seen from outside
-    const int fv[24] = {0, 4, 6, 2, 1, 3, 7, 5, 0, 1, 5, 4, 2, 6, 7, 3, 0, 2, 3, 1, 4, 5, 7, 6};
-    for (int i = 0; i < 24; ++i)
-    {
-        box.faceVertex[i] = fv[i];
-    }
-    for (int f = 0; f <= 6; ++f)
-    {
-        box.faceStart[f] = 4 * f;
-    }
-    box.finish(8, 6, norm(h), 8.0 * h.x * h.y * h.z);
-}
-
-//- Two unit vectors completing n to a right-handed frame (e1, e2, n)
-PD_INLINE void completeFrame(const Vec3& n, Vec3& e1, Vec3& e2)
-{
-    const Vec3 a = fabs(n.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
-    e1 = cross(a, n);
-    e1 = e1 / norm(e1);
-    e2 = cross(n, e1);
-}
-
 //- Result from A's frame (rotation qA, origin posA) to the world frame
 PD_INLINE OverlapResult toWorld(OverlapResult r, const Vec3& posA, const Quaternion& qA)
 {
@@ -433,6 +361,114 @@ PD_INLINE OverlapResult toWorld(OverlapResult r, const Vec3& posA, const Quatern
         r.centroid = posA + rotate(qA, r.centroid);
         r.normal = rotate(qA, r.normal);
         r.areaVector = rotate(qA, r.areaVector);
+    }
+    return r;
+}
+
+//- Overlap of polyhedron P (pose pos, q, world frame) with the wall solid
+//  W = {x : n.(x - o) <= 0} n {x : m_k.x <= d_k, k < nSide} (o on the wall
+//  plane; side planes in coordinates relative to o, parallel to n: a
+//  triangle's prism, or none for a plane). Only P's faces are clipped (by at
+//  most 1 + nSide planes, against a six-plane box or a five-plane prism clipped
+//  both ways before). Volume and centroid by the divergence theorem with
+//  fields parallel to n that vanish on the wall plane, h = n.(x - o):
+//      V = surf h (n.N) dA,  int h dV = surf h^2/2 (n.N) dA,
+//      int t dV = surf h t (n.N) dA   (t: the part of x - o normal to n),
+//  so the wall's own faces (h = 0 on the top, n.N = 0 on the sides) add
+//  nothing and are never built; each integral is exact on a fan triangle
+//  (edge-midpoint rule). S = -(area vector of P's part of the boundary).
+//  tol, fallback normal and touching threshold as in overlapInFrameOfA.
+PD_INLINE OverlapResult halfSpaceClipOverlap
+(
+    const ConvexPolyhedron& P, const Vec3& pos, const Quaternion& q, const Vec3& o, const Vec3& n,
+    const Vec3* sideNormal, const double* sideOffset, int nSide, double tol
+)
+{
+    OverlapResult r;
+    Vec3 pn[4];
+    double pd[4];
+    pn[0] = n;
+    pd[0] = 0;
+    for (int k = 0; k < nSide; ++k)
+    {
+        pn[k + 1] = sideNormal[k];
+        pd[k + 1] = sideOffset[k];
+    }
+    const int nPlanes = 1 + nSide;
+
+    const Vec3 c = pos - o;
+    Vec3 v[kMaxPolyhedronVertices];
+    double hv[kMaxPolyhedronVertices];
+    for (int i = 0; i < P.nVertices; ++i)
+    {
+        v[i] = c + rotate(q, P.vertices[i]);
+        hv[i] = dot(n, v[i]);
+    }
+
+    double volume = 0, hMoment = 0, surface = 0;
+    Vec3 tMoment, twiceArea;
+    Vec3 bufA[kClipBuffer];
+    Vec3 bufB[kClipBuffer];
+    for (int f = 0; f < P.nFaces; ++f)
+    {
+        const int f0 = P.faceStart[f];
+        const int m = P.faceSize(f);
+        // A face wholly above the wall plane cannot meet the wall solid
+        double hMin = hv[P.faceVertex[f0]];
+        for (int i = 1; i < m; ++i)
+        {
+            const double h = hv[P.faceVertex[f0 + i]];
+            hMin = h < hMin ? h : hMin;
+        }
+        if (hMin >= -tol) continue;
+        for (int i = 0; i < m; ++i)
+        {
+            bufA[i] = v[P.faceVertex[f0 + i]];
+        }
+        Vec3* poly = nullptr;
+        const Vec3 faceNormal = rotate(q, P.faceNormals[f]);
+        const int nv = clipPolygon(bufA, bufB, m, pn, pd, nPlanes, faceNormal, true, tol, poly);
+        if (nv < 3) continue;
+        Vec3 polyArea;
+        const Vec3 x0 = poly[0];
+        const double h0 = dot(n, x0);
+        const Vec3 t0 = x0 - h0 * n;
+        for (int i = 1; i + 1 < nv; ++i)
+        {
+            const Vec3 x1 = poly[i], x2 = poly[i + 1];
+            const Vec3 a2 = cross(x1 - x0, x2 - x0);
+            polyArea += a2;
+            const double w = 0.5 * dot(n, a2);   // projected, signed area
+            const double h1 = dot(n, x1), h2 = dot(n, x2);
+            const Vec3 t1 = x1 - h1 * n, t2 = x2 - h2 * n;
+            // Edge midpoints: exact for the quadratic integrands
+            const double ha = 0.5 * (h0 + h1), hb = 0.5 * (h1 + h2), hc = 0.5 * (h2 + h0);
+            const Vec3 ta = 0.5 * (t0 + t1), tb = 0.5 * (t1 + t2), tc = 0.5 * (t2 + t0);
+            volume += w * (h0 + h1 + h2) * (1.0 / 3.0);
+            hMoment += w * (ha * ha + hb * hb + hc * hc) * (1.0 / 6.0);
+            tMoment += (w * (1.0 / 3.0)) * (ha * ta + hb * tb + hc * tc);
+        }
+        twiceArea += polyArea;
+        surface += 0.5 * norm(polyArea);
+    }
+    if (!(volume > kOverlapTouchingVolume * P.volume))
+    {
+        return r;
+    }
+    r.touching = true;
+    r.volume = volume;
+    r.centroid = o + (1.0 / volume) * (tMoment + hMoment * n);
+    r.areaVector = -0.5 * twiceArea;
+    r.contactArea = norm(r.areaVector);
+    if (r.contactArea > 1e-9 * (surface + r.contactArea))
+    {
+        r.normal = r.areaVector / r.contactArea;
+    }
+    else
+    {
+        // P wholly inside the wall: no preferred direction; centre line
+        const double d = norm(c);
+        r.normal = d > 1e-300 ? c / d : Vec3(0, 0, 1);
     }
     return r;
 }
@@ -479,19 +515,13 @@ inline PD_HD OverlapResult polyhedronPlaneOverlap(const ConvexPolyhedron& P, con
     {
         return OverlapResult();
     }
-    // The wall as a box below the plane, centred under the particle, wider
-    // and deeper than the particle can reach: exact for the half-space
-    Vec3 e1, e2;
-    overlapDetail::completeFrame(planeNormal, e1, e2);
+    // Directly against the half-space (same tolerance as the former box of
+    // half sizes 2r, 2r, depth/2 under the particle)
     const Vec3 origin = pos - dist * planeNormal; // on the plane
     const double depth = 2.0 * r + (dist < 0 ? -dist : 0.0);
-    overlapDetail::LocalPolyhedron box;
-    overlapDetail::makeBox(box, -0.5 * depth * planeNormal, e1, e2, planeNormal,
-                           Vec3(2.0 * r, 2.0 * r, 0.5 * depth));
-    box.shape.volume = P.volume; // the touching threshold scales with the particle
-    const OverlapResult res =
-        overlapDetail::overlapInFrameOfA(box.shape, P, q, pos - origin, nullptr, false);
-    return overlapDetail::toWorld(res, origin, Quaternion());
+    const double boxRadius = sqrt(8.0 * r * r + 0.25 * depth * depth);
+    const double tol = kOverlapPlaneTolerance * (boxRadius > r ? boxRadius : r);
+    return overlapDetail::halfSpaceClipOverlap(P, pos, q, origin, planeNormal, nullptr, nullptr, 0, tol);
 }
 
 //- Overlap of a polyhedron with the wall triangle (t0, t1, t2), counter-clockwise
@@ -513,36 +543,29 @@ inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, 
     {
         return OverlapResult();
     }
-    // Work relative to the triangle's centroid for accuracy
+    // Work relative to the triangle's centroid for accuracy. The wall is the
+    // triangle's normal prism below it: the plane and three side planes.
     const Vec3 origin = (t0 + t1 + t2) / 3.0;
     const double depth = 2.0 * r + (dist < 0 ? -dist : 0.0);
-    overlapDetail::LocalPolyhedron prism;
     const Vec3 t[3] = {t0 - origin, t1 - origin, t2 - origin};
     double radius = 0;
+    Vec3 sideNormal[3];
+    double sideOffset[3];
     for (int i = 0; i < 3; ++i)
     {
-        prism.vertices[i] = t[i];
-        prism.vertices[i + 3] = t[i] - depth * n;
-        const double ri = norm(prism.vertices[i + 3]);
+        const double ri = norm(t[i] - depth * n);
         radius = ri > radius ? ri : radius;
         const double rt = norm(t[i]);
         radius = rt > radius ? rt : radius;
+        // Outward normal of the side through edge (i, i+1), counter-clockwise about n
+        const Vec3 e = t[(i + 1) % 3] - t[i];
+        Vec3 m = cross(e, n);
+        m = m / norm(m);
+        sideNormal[i] = m;
+        sideOffset[i] = dot(m, t[i]);
     }
-    // Top (0 1 2), bottom (3 5 4), sides (i, i+3, j+3, j)
-    const int fv[18] = {0, 1, 2, 3, 5, 4, 0, 3, 4, 1, 1, 4, 5, 2, 2, 5, 3, 0};
-    for (int i = 0; i < 18; ++i)
-    {
-        prism.faceVertex[i] = fv[i];
-    }
-    const int fs[6] = {0, 3, 6, 10, 14, 18};
-    for (int f = 0; f < 6; ++f)
-    {
-        prism.faceStart[f] = fs[f];
-    }
-    prism.finish(6, 5, radius, P.volume);
-    const OverlapResult res =
-        overlapDetail::overlapInFrameOfA(prism.shape, P, q, pos - origin, nullptr, false);
-    return overlapDetail::toWorld(res, origin, Quaternion());
+    const double tol = kOverlapPlaneTolerance * (radius > r ? radius : r);
+    return overlapDetail::halfSpaceClipOverlap(P, pos, q, origin, n, sideNormal, sideOffset, 3, tol);
 }
 
 //- Overlap of a polyhedron (A) with a sphere (B), distance based (see top):

@@ -61,6 +61,10 @@
 #include <cstdint>
 #include <map>
 #include <type_traits>
+
+#ifndef __CUDACC__
+#include <omp.h>
+#endif
 #include <vector>
 
 namespace polydem
@@ -865,8 +869,12 @@ private:
         }
 #else
         constexpr bool ownFromPairs = false;
-        thrust::for_each(thrust::device, first, first + n,
-                         PairKernel<Law, Kind>{PairContact<Law, Kind>{pv, lv, pl}, ptr(ownForce_), ptr(ownTorque_)});
+        const bool serial = omp_get_max_threads() == 1 && config_.meshes.empty();
+        if (!serial)
+        {
+            thrust::for_each(thrust::device, first, first + n,
+                             PairKernel<Law, Kind>{PairContact<Law, Kind>{pv, lv, pl}, ptr(ownForce_), ptr(ownTorque_)});
+        }
 #endif
         (void)nPairs;
         const int nMesh = int(config_.meshes.size());
@@ -894,6 +902,27 @@ private:
         };
         if (nMesh == 0)
         {
+#ifndef __CUDACC__
+            if (serial)
+            {
+                // One thread: pairs, planes and kick in a single loop
+                ParticleForces<Law, Kind, Kick, false> k;
+                k.wall = wall;
+                k.gravity = config_.gravity;
+                k.time = time_;
+                k.dt = config_.timeStep;
+                k.pairs = pl;
+                k.contactCount = ptr(contactCount_);
+                k.planes = planes_.empty() ? nullptr : ptr(planes_);
+                k.planeStart = ptr(planeStart_);
+                k.planePlane = ptr(planePlane_);
+                k.planeXi = ptr(planeXi_);
+                k.planeMr = rolling ? ptr(planeMr_) : nullptr;
+                k.wallContactCount = ptr(wallContactCount_);
+                SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(ownForce_), ptr(ownTorque_)}.run(n);
+                return;
+            }
+#endif
             particleForces(std::integral_constant<bool, Kick>());
             return;
         }

@@ -117,47 +117,20 @@ struct ParticleForces
     Vec3* planeMr;          //!< null without a rolling model
     int* wallContactCount;
 
-    PD_HD void operator()(int i) const
+    //- Gravity and the external force and torque of particle i
+    PD_HD void base(int i, Vec3& F, Vec3& T) const
     {
         const ParticleView& p = wall.p;
-        Vec3 F = p.mass[i] * gravity;
-        Vec3 T;
+        F = p.mass[i] * gravity;
+        T = Vec3();
         if (p.extForce) F += p.extForce[i];
         if (p.extTorque) T += p.extTorque[i];
+    }
 
-        int touching = 0;
-        {
-            Vec3 Fo, To;
-            const int end = pairs.start[i + 1];
-            for (int k = pairs.start[i]; k < end; ++k)
-            {
-                if (!pairs.touching[k]) continue;
-                ++touching;
-                if (OwnFromPairs)
-                {
-                    Fo += pairs.force[k];
-                    To += pairs.torqueA[k];
-                }
-            }
-            if (!OwnFromPairs)
-            {
-                Fo = ownForce[i];
-                To = ownTorque[i];
-            }
-            F += Fo;
-            T += To;
-        }
-        const int inEnd = inStart[i + 1];
-        for (int l = inStart[i]; l < inEnd; ++l)
-        {
-            const int k = inPair[l];
-            if (!pairs.touching[k]) continue;
-            ++touching;
-            F -= pairs.force[k];
-            T += pairs.torqueB[k];
-        }
-        contactCount[i] = touching;
-
+    //- Plane contacts of particle i (its candidates); returns how many touch
+    PD_HD int planeContacts(int i, Vec3& F, Vec3& T) const
+    {
+        const ParticleView& p = wall.p;
         int walls = 0;
         const Vec3 x = p.pos[i];
         const double r = p.radius[i];
@@ -200,11 +173,101 @@ struct ParticleForces
             wall.point(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
                        planeXi[c], mr, F, T);
         }
-        wallContactCount[i] = walls;
+        return walls;
+    }
 
+    //- Walls, store, kick: the end of particle i's step once its pair sums are in
+    PD_HD void finish(int i, Vec3 F, Vec3 T) const
+    {
+        const ParticleView& p = wall.p;
+        wallContactCount[i] = planeContacts(i, F, T);
         p.force[i] = F;
         p.torque[i] = T;
         if (Kick) finalKick<Kind>(p, wall.law.typeShape, dt, i, F, T);
+    }
+
+    //- Sum order: base, pairs as body 2 (pair order), pairs as body 1 (their
+    //  sum, list order), planes. SerialStep produces the same operations.
+    PD_HD void operator()(int i) const
+    {
+        Vec3 F, T;
+        base(i, F, T);
+        int touching = 0;
+        const int inEnd = inStart[i + 1];
+        for (int l = inStart[i]; l < inEnd; ++l)
+        {
+            const int k = inPair[l];
+            if (!pairs.touching[k]) continue;
+            ++touching;
+            F -= pairs.force[k];
+            T += pairs.torqueB[k];
+        }
+        Vec3 Fo, To;
+        const int end = pairs.start[i + 1];
+        for (int k = pairs.start[i]; k < end; ++k)
+        {
+            if (!pairs.touching[k]) continue;
+            ++touching;
+            if (OwnFromPairs)
+            {
+                Fo += pairs.force[k];
+                To += pairs.torqueA[k];
+            }
+        }
+        if (!OwnFromPairs)
+        {
+            Fo = ownForce[i];
+            To = ownTorque[i];
+        }
+        F += Fo;
+        T += To;
+        contactCount[i] = touching;
+        finish(i, F, T);
+    }
+};
+
+//- CPU, one thread: the whole force pass in one loop over particles in order,
+//  each pair's share for body 2 added straight into its accumulator (body 2
+//  comes later in the order, so it is complete when its turn comes). The
+//  operations and their order are those of PairKernel + ParticleForces, so
+//  the result is bit-identical to the multi-threaded path.
+template<class Law, class Kind, bool Kick>
+struct SerialStep
+{
+    PairContact<Law, Kind> contact;
+    ParticleForces<Law, Kind, Kick, false> forces;
+    Vec3* accForce;
+    Vec3* accTorque;
+
+    void run(int n) const
+    {
+        const PairLists& pl = contact.pl;
+        int* count = forces.contactCount;
+        for (int i = 0; i < n; ++i)
+        {
+            forces.base(i, accForce[i], accTorque[i]);
+            count[i] = 0;
+        }
+        for (int i = 0; i < n; ++i)
+        {
+            Vec3 Fo, To;
+            int touching = count[i];
+            const int end = pl.start[i + 1];
+            for (int k = pl.start[i]; k < end; ++k)
+            {
+                Vec3 f, ta, tb;
+                if (!contact(i, k, f, ta, tb)) continue;
+                ++touching;
+                Fo += f;
+                To += ta;
+                const int b = pl.partner[k];
+                accForce[b] -= f;
+                accTorque[b] += tb;
+                ++count[b];
+            }
+            count[i] = touching;
+            forces.finish(i, accForce[i] + Fo, accTorque[i] + To);
+        }
     }
 };
 
