@@ -192,7 +192,8 @@ inline PD_HD int clipPolygon(Vec3* bufA, Vec3* bufB, int n, const Vec3* pn, cons
 inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron& X,
                                   const Vec3* xv, const Vec3* xn, const Vec3* yn,
                                   const double* yd, int nyPlanes, bool fromA, double tol,
-                                  const Vec3& yCentre, double yRadius)
+                                  const Vec3& yCentre, double yRadius,
+                                  const double* proj, double slabLo, double slabHi)
 {
     Vec3 bufA[kClipBuffer];
     Vec3 bufB[kClipBuffer];
@@ -204,6 +205,19 @@ inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron
             continue;
         }
         const int m = X.faceSize(f);
+        // The intersection lies in the slab where the projections of X and Y
+        // overlap: a face wholly outside it cannot meet Y
+        double pMin = proj[X.faceVertex[X.faceStart[f]]], pMax = pMin;
+        for (int i = 1; i < m; ++i)
+        {
+            const double p = proj[X.faceVertex[X.faceStart[f] + i]];
+            pMin = p < pMin ? p : pMin;
+            pMax = p > pMax ? p : pMax;
+        }
+        if (pMax < slabLo || pMin > slabHi)
+        {
+            continue;
+        }
         for (int i = 0; i < m; ++i)
         {
             bufA[i] = xv[X.faceVertex[X.faceStart[f] + i]];
@@ -321,10 +335,31 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
         }
     }
 
+    // Slab along the line of centres (any axis bounds the intersection; this
+    // one makes the slab as thin as the overlap for a typical contact)
+    const double dCentres = norm(posB);
+    const Vec3 axis = dCentres > 0 ? posB / dCentres : Vec3(0, 0, 1);
+    double pa[kMaxPolyhedronVertices], pb[kMaxPolyhedronVertices];
+    double aMin = 1e300, aMax = -1e300, bMin = 1e300, bMax = -1e300;
+    for (int i = 0; i < A.nVertices; ++i)
+    {
+        pa[i] = dot(axis, A.vertices[i]);
+        aMin = pa[i] < aMin ? pa[i] : aMin;
+        aMax = pa[i] > aMax ? pa[i] : aMax;
+    }
+    for (int i = 0; i < B.nVertices; ++i)
+    {
+        pb[i] = dot(axis, bv[i]);
+        bMin = pb[i] < bMin ? pb[i] : bMin;
+        bMax = pb[i] > bMax ? pb[i] : bMax;
+    }
+    const double slabLo = (aMin > bMin ? aMin : bMin) - tol;
+    const double slabHi = (aMax < bMax ? aMax : bMax) + tol;
+
     // Boundary of A n B: faces of A inside B, faces of B inside A
     BoundaryIntegrals acc;
-    addClippedFaces(acc, A, A.vertices, A.faceNormals, bn, bd, B.nFaces, true, tol, posB, rB);
-    addClippedFaces(acc, B, bv, bn, A.faceNormals, A.faceOffsets, A.nFaces, false, tol, Vec3(), rA);
+    addClippedFaces(acc, A, A.vertices, A.faceNormals, bn, bd, B.nFaces, true, tol, posB, rB, pa, slabLo, slabHi);
+    addClippedFaces(acc, B, bv, bn, A.faceNormals, A.faceOffsets, A.nFaces, false, tol, Vec3(), rA, pb, slabLo, slabHi);
 
     const double volume = acc.sixVolume / 6.0;
     const double minVolume = A.volume < B.volume ? A.volume : B.volume;
