@@ -121,6 +121,14 @@ struct LawView
     }
 };
 
+//- Per-contact functions forced inline on the CPU (a call per pair costs more than
+//  the distance test of a non-touching one); nvcc decides for itself
+#if defined(__CUDACC__)
+#define PD_CONTACT PD_HD
+#else
+#define PD_CONTACT __attribute__((always_inline))
+#endif
+
 //- Particle kinds a kernel is compiled for: a run whose types are all spheres
 //  gets kernels with no polyhedral code in them (smaller, fewer registers)
 struct SphereKind

@@ -45,7 +45,7 @@ struct PairContact
         }
     }
 
-    PD_HD bool operator()(int a, int k, Vec3& F, Vec3& Ta, Vec3& Tb) const
+    PD_CONTACT bool operator()(int a, int k, Vec3& F, Vec3& Ta, Vec3& Tb) const
     {
         const int b = pl.partner[k];
         const Vec3 d = p.pos[b] - p.pos[a];

@@ -27,7 +27,7 @@ struct WallContact
     }
 
     //- Point contact of a sphere (Hertz, linear law) at wallPoint
-    PD_HD void point
+    PD_CONTACT void point
     (
         int i, int material, const Vec3& wallPoint, const Vec3& wallVel, const Vec3& wallOmega,
         Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
