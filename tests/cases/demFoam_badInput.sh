@@ -3,7 +3,8 @@
 # file at fault (demProperties, or the STL) and the entry.
 #
 #   demFoam_badInput.sh missingKey|illTypedKey|unknownLaw|missingStl|
-#                       malformedStl|unstableTimeStep|indivisibleDeltaT
+#                       malformedStl|unstableTimeStep|indivisibleDeltaT|
+#                       twistingWithoutCoefficient|negativeTwistingFriction
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -47,6 +48,15 @@ indivisibleDeltaT)
     setEntry $props timeStep 3e-5
     expectFile="constant/demProperties"; expectEntry="timeStep"
     expectAlso="deltaT" ;;
+twistingWithoutCoefficient)
+    # twisting resistance switched on: every interaction needs its mu_t
+    setEntry $props contactModel/twisting yes
+    expectFile="constant/demProperties"; expectEntry="twistingFriction" ;;
+negativeTwistingFriction)
+    setEntry $props contactModel/twisting yes
+    setEntry $props interactions/default/twistingFriction -0.1
+    expectFile="constant/demProperties"; expectEntry="twistingFriction"
+    expectAlso=">= 0" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

@@ -10,6 +10,7 @@ Description
 #include "IOstreams.H"
 #include "wordList.H"
 
+#include <cmath>
 #include <vector>
 
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
@@ -90,6 +91,7 @@ void Foam::demMaterialsReader::readInteractions
 
     const bool rolling =
         config.contact.rolling != polydem::RollingModel::none;
+    const bool twisting = config.contact.twisting;
 
     auto readPair = [&](const dictionary& pd, polydem::PairProperties& p)
     {
@@ -104,6 +106,22 @@ void Foam::demMaterialsReader::readInteractions
             p.rollingFriction = pd.getOrDefault<scalar>("rollingFriction", 0);
         }
         p.rollingDamping = pd.getOrDefault<scalar>("rollingDamping", 0.3);
+        if (twisting)
+        {
+            p.twistingFriction = pd.get<scalar>("twistingFriction");
+        }
+        else
+        {
+            p.twistingFriction = pd.getOrDefault<scalar>("twistingFriction", 0);
+        }
+        if (!(p.twistingFriction >= 0) || !std::isfinite(p.twistingFriction))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry 'twistingFriction' of " << pd.dictName()
+                << " must be a finite number >= 0 (the twisting resistance "
+                << "coefficient mu_t, M = mu_t R* Fn), got " << p.twistingFriction
+                << " in " << dict.name() << nl << exit(FatalIOError);
+        }
     };
 
     if (const dictionary* def = d.findDict("default"))

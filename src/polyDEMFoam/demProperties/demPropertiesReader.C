@@ -73,6 +73,9 @@ void Foam::demPropertiesReader::readContactModel()
     config_.contact.law = polydem::ContactLaw(demPropertiesErrors::selectName(d, "law", laws, "contact law"));
     config_.contact.rolling =
         polydem::RollingModel(demPropertiesErrors::selectNameOrDefault(d, "rolling", rollings, "rolling model", 0));
+    // Twisting (torsional) resistance about the contact normal: an option of
+    // the rolling model, with its coefficient per interaction (twistingFriction)
+    config_.contact.twisting = d.getOrDefault<bool>("twisting", false);
 
     if (config_.contact.law == polydem::ContactLaw::linearSpringDashpot)
     {
