@@ -111,6 +111,7 @@ void Foam::demPropertiesReader::readOutput()
     stateFormat_ = polydem::StateFormat::ascii;
     writeVtk_ = true;
     reportInterval_ = dict_.getOrDefault<scalar>("reportInterval", 5);
+    freshStart_ = dict_.getOrDefault<bool>("freshStart", false);
     if (const dictionary* od = dict_.findDict("output"))
     {
         static const wordList formats({"ascii", "binary"});
@@ -180,6 +181,7 @@ Foam::demPropertiesReader::demPropertiesReader(const dictionary& demProperties)
     stateFormat_(polydem::StateFormat::ascii),
     writeVtk_(true),
     reportInterval_(5),
+    freshStart_(false),
     sceneSize_(0.1)
 {
     readGeneral();
