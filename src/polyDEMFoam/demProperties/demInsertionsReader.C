@@ -63,6 +63,11 @@ polydem::SizeDistribution Foam::demInsertionsReader::readDistribution
     }
     else
     {
+        demPropertiesErrors::checkKeys
+        (
+            dict, *dd, "insertion/" + id.dictName() + "/diameterDistribution",
+            {"type", "diameter", "min", "max", "mean", "standardDeviation", "fractions"}
+        );
         static const wordList kinds({"fixed", "uniform", "normal", "discrete"});
         const label kind = demPropertiesErrors::selectName(*dd, "type", kinds, "diameter distribution");
         switch (kind)
@@ -135,6 +140,11 @@ polydem::FillRegion Foam::demInsertionsReader::readRegion
 )
 {
     const dictionary& rd = id.subDict("region");
+    demPropertiesErrors::checkKeys
+    (
+        dict, rd, "insertion/" + id.dictName() + "/region",
+        {"type", "min", "max", "file", "scale"}
+    );
     static const wordList kinds({"box", "stl"});
     const label kind = demPropertiesErrors::selectName(rd, "type", kinds, "region type");
     if (kind == 0)
@@ -383,6 +393,16 @@ Foam::demInsertionsReader::read
                 << exit(FatalIOError);
         }
         const dictionary& id = e.dict();
+        static const wordList insertionKeys
+        ({
+            "type", "particleType", "time", "number", "seed", "gap",
+            "velocity", "orientation", "region", "diameterDistribution",
+            "particles"
+        });
+        demPropertiesErrors::checkKeys
+        (
+            dict, id, "insertion/" + e.keyword(), insertionKeys
+        );
         const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
         insertion ins;
         ins.name = e.keyword();

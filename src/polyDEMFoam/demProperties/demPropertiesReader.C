@@ -26,6 +26,15 @@ using Foam::polyDEMConversions::toVec3;
 
 void Foam::demPropertiesReader::readGeneral()
 {
+    // 'monitors' is refused later with a message saying where it moved
+    static const wordList topKeys
+    ({
+        "device", "timeStep", "gravity", "skin", "domain", "contactModel",
+        "materials", "interactions", "particleTypes", "walls", "insertion",
+        "output", "reportInterval", "freshStart", "monitors"
+    });
+    demPropertiesErrors::checkKeys(dict_, dict_, "", topKeys);
+
     config_.source = dict_.name();
     config_.device = dict_.getOrDefault<word>("device", "cpu");
     config_.timeStep = dict_.get<scalar>("timeStep");
@@ -44,6 +53,7 @@ void Foam::demPropertiesReader::readGeneral()
 
     if (const dictionary* dom = dict_.findDict("domain"))
     {
+        demPropertiesErrors::checkKeys(dict_, *dom, "domain", {"min", "max"});
         config_.domainMin = toVec3(dom->get<vector>("min"));
         config_.domainMax = toVec3(dom->get<vector>("max"));
         for (int k = 0; k < 3; ++k)
@@ -63,6 +73,14 @@ void Foam::demPropertiesReader::readGeneral()
 void Foam::demPropertiesReader::readContactModel()
 {
     const dictionary& d = dict_.subDict("contactModel");
+    demPropertiesErrors::checkKeys
+    (
+        dict_, d, "contactModel",
+        {
+            "law", "rolling", "twisting", "normalStiffness",
+            "volumetricStiffness", "tangentialStiffnessRatio"
+        }
+    );
 
     static const wordList laws
     ({
@@ -114,6 +132,7 @@ void Foam::demPropertiesReader::readOutput()
     freshStart_ = dict_.getOrDefault<bool>("freshStart", false);
     if (const dictionary* od = dict_.findDict("output"))
     {
+        demPropertiesErrors::checkKeys(dict_, *od, "output", {"format", "vtk"});
         static const wordList formats({"ascii", "binary"});
         stateFormat_ = polydem::StateFormat
         (

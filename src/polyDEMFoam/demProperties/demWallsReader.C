@@ -20,6 +20,7 @@ using Foam::polyDEMConversions::toVec3;
 
 polydem::WallMotion Foam::demWallsReader::readMotion
 (
+    const dictionary& demProperties,
     const dictionary& wallDict
 )
 {
@@ -29,6 +30,11 @@ polydem::WallMotion Foam::demWallsReader::readMotion
     {
         return m;
     }
+    demPropertiesErrors::checkKeys
+    (
+        demProperties, *md, "walls/" + wallDict.dictName() + "/motion",
+        {"type", "velocity", "origin", "axis", "rpm", "omega"}
+    );
     static const wordList kinds({"fixed", "translation", "rotation"});
     m.kind = polydem::MotionKind
     (
@@ -83,6 +89,12 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
                 << dict.name() << nl << exit(FatalIOError);
         }
         const dictionary& wd = e.dict();
+        static const wordList wallKeys
+        ({
+            "type", "point", "normal", "material", "motion", "file", "scale",
+            "activeUntil", "displaySize"
+        });
+        demPropertiesErrors::checkKeys(dict, wd, "walls/" + e.keyword(), wallKeys);
         wallInfo info;
         info.name = e.keyword();
         info.activeUntil = wd.getOrDefault<scalar>("activeUntil", GREAT);
@@ -97,7 +109,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             w.point = toVec3(wd.get<vector>("point"));
             w.normal = toVec3(wd.get<vector>("normal"));
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
-            w.motion = readMotion(wd);
+            w.motion = readMotion(dict, wd);
             info.isPlane = true;
             info.index = label(config.planes.size());
             config.planes.push_back(w);
@@ -107,7 +119,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             polydem::MeshWall w;
             w.name = e.keyword();
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
-            w.motion = readMotion(wd);
+            w.motion = readMotion(dict, wd);
             w.mesh = demSurfaceReader::read
             (
                 dict, wd, "file", "walls/" + e.keyword() + "/file"
