@@ -5,7 +5,8 @@
 #   demFoam_badInput.sh missingKey|illTypedKey|unknownLaw|missingStl|
 #                       malformedStl|unstableTimeStep|indivisibleDeltaT|
 #                       twistingWithoutCoefficient|negativeTwistingFriction|
-#                       misspelledTopKey|misspelledWallKey|misspelledInsertionKey
+#                       misspelledTopKey|misspelledWallKey|misspelledInsertionKey|
+#                       negativeActiveUntil|negativeGap
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -72,6 +73,14 @@ misspelledInsertionKey)
     setEntry $props insertion/beads/velocty "(0 0 -1)"
     expectFile="constant/demProperties"; expectEntry="insertion/beads/velocty"
     expectAlso="Valid entries of 'insertion/beads'" ;;
+negativeActiveUntil)
+    # used to be accepted (the wall removed at the first step)
+    setEntry $props walls/floor/activeUntil -1
+    expectFile="constant/demProperties"; expectEntry="walls/floor/activeUntil" ;;
+negativeGap)
+    # used to be reported as insertion/beads/number
+    setEntry $props insertion/beads/gap -1e-3
+    expectFile="constant/demProperties"; expectEntry="insertion/beads/gap" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

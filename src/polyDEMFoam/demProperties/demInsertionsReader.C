@@ -408,6 +408,14 @@ Foam::demInsertionsReader::read
         ins.name = e.keyword();
         ins.type = typeIndex(userTypes, id, "particleType");
         ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (id.found("time", keyType::LITERAL) && !(ins.time >= 0))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword() << "/time' must be a "
+                << "time >= 0 [s] (leave it out to insert at the start), not "
+                << ins.time << ", in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
         if (kind == 1)
         {
             ins.kind = insertion::method::list;
@@ -418,6 +426,14 @@ Foam::demInsertionsReader::read
         ins.number = id.get<label>("number");
         ins.seed = id.getOrDefault<label>("seed", 1);
         ins.gap = id.getOrDefault<scalar>("gap", 0);
+        if (!(ins.gap >= 0))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword() << "/gap' must be >= 0 "
+                << "[m] (the smallest surface distance between inserted "
+                << "particles), not " << ins.gap << ", in " << dict.name()
+                << nl << exit(FatalIOError);
+        }
         ins.velocity = toVec3(id.getOrDefault<vector>("velocity", Zero));
         if (id.found("orientation", keyType::LITERAL))
         {

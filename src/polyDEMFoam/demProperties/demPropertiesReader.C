@@ -50,6 +50,13 @@ void Foam::demPropertiesReader::readGeneral()
     }
     config_.gravity = toVec3(dict_.getOrDefault<vector>("gravity", vector(0, 0, -9.81)));
     config_.skinFraction = dict_.getOrDefault<scalar>("skin", 0.2);
+    if (!(config_.skinFraction > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'skin' must be positive (a fraction of the largest "
+            << "diameter), not " << config_.skinFraction << ", in "
+            << dict_.name() << nl << exit(FatalIOError);
+    }
 
     if (const dictionary* dom = dict_.findDict("domain"))
     {
@@ -129,6 +136,13 @@ void Foam::demPropertiesReader::readOutput()
     stateFormat_ = polydem::StateFormat::ascii;
     writeVtk_ = true;
     reportInterval_ = dict_.getOrDefault<scalar>("reportInterval", 5);
+    if (!(reportInterval_ >= 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'reportInterval' must be >= 0 [s of wall time], not "
+            << reportInterval_ << ", in " << dict_.name() << nl
+            << exit(FatalIOError);
+    }
     freshStart_ = dict_.getOrDefault<bool>("freshStart", false);
     if (const dictionary* od = dict_.findDict("output"))
     {

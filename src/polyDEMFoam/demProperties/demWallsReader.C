@@ -98,6 +98,14 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
         wallInfo info;
         info.name = e.keyword();
         info.activeUntil = wd.getOrDefault<scalar>("activeUntil", GREAT);
+        if (!(info.activeUntil >= 0))
+        {
+            FatalIOErrorInFunction(wd)
+                << "Entry 'walls/" << e.keyword() << "/activeUntil' must be a "
+                << "time >= 0 [s] (leave it out for a wall that stays), not "
+                << info.activeUntil << ", in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
         info.displaySize = wd.getOrDefault<scalar>("displaySize", 0);
 
         const label kind =
