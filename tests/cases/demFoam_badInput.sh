@@ -4,7 +4,9 @@
 #
 #   demFoam_badInput.sh missingKey|illTypedKey|unknownLaw|missingStl|
 #                       malformedStl|unstableTimeStep|indivisibleDeltaT|
-#                       twistingWithoutCoefficient|negativeTwistingFriction
+#                       twistingWithoutCoefficient|negativeTwistingFriction|
+#                       misspelledTopKey|misspelledWallKey|misspelledInsertionKey|
+#                       negativeActiveUntil|negativeGap
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -57,6 +59,28 @@ negativeTwistingFriction)
     setEntry $props interactions/default/twistingFriction -0.1
     expectFile="constant/demProperties"; expectEntry="twistingFriction"
     expectAlso=">= 0" ;;
+misspelledTopKey)
+    # used to be ignored: gravity then defaults to (0 0 -9.81)
+    sed -i 's/^gravity /gravty  /' $props
+    expectFile="constant/demProperties"; expectEntry="gravty"
+    expectAlso="did you mean 'gravity'" ;;
+misspelledWallKey)
+    # used to be ignored: the wall then stays for the whole run
+    setEntry $props walls/floor/activeUntill 0.005
+    expectFile="constant/demProperties"; expectEntry="walls/floor/activeUntill"
+    expectAlso="did you mean 'activeUntil'" ;;
+misspelledInsertionKey)
+    setEntry $props insertion/beads/velocty "(0 0 -1)"
+    expectFile="constant/demProperties"; expectEntry="insertion/beads/velocty"
+    expectAlso="Valid entries of 'insertion/beads'" ;;
+negativeActiveUntil)
+    # used to be accepted (the wall removed at the first step)
+    setEntry $props walls/floor/activeUntil -1
+    expectFile="constant/demProperties"; expectEntry="walls/floor/activeUntil" ;;
+negativeGap)
+    # used to be reported as insertion/beads/number
+    setEntry $props insertion/beads/gap -1e-3
+    expectFile="constant/demProperties"; expectEntry="insertion/beads/gap" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

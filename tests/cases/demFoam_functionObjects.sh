@@ -28,6 +28,7 @@ setEntry system/controlDict endTime 0.3
 demFoam > log.demFoam 2>&1 || { tail -30 log.demFoam; fail "demFoam failed"; }
 
 python3 - <<'PYEOF' || fail "function-object check failed"
+import re
 import sys
 g = 9.81
 def rows(p):
@@ -50,7 +51,9 @@ check(f"free fall of the centre of mass over {len(free)} rows: max error {err:.2
 top = bed[-1][9]
 check(f"bed top at the end {top:.4f} m below the plane 0.02 m", top < 0.02)
 # initial state: id type radius mass I(3) x y z ...
-lines = open("0/polyDEM/state").read().split("\ndata\n", 1)[1].split("\n")
+head, body = open("0/polyDEM/state").read().split("\ndata\n", 1)
+nState = int(re.search(r"^particles (\d+)$", head, re.M).group(1))
+lines = body.split("\n")[:nState]   # (the checksum line follows the records)
 above = [l.split() for l in lines if l.strip() and float(l.split()[9]) > 0.02]
 n, m = len(above), sum(float(l[3]) for l in above)
 count, mass = flux[-1][1], flux[-1][2]

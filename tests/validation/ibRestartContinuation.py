@@ -12,6 +12,8 @@ history; every number), the fields U, p, phi and fIB, and the particle rows
 of postProcessing/ibForces after t0.
 Tolerance: bit-exact (identical files); the largest relative difference is
 printed, and a difference above 1e-10 fails.
+Then: the restart from t0 with <t0>/polyDEM/ibState deleted must stop with a
+FatalError naming it.
 """
 import glob
 import os
@@ -109,4 +111,20 @@ zA = ra[-1][4] if ra else float("nan")
 z0 = rows(case, -1)[0][4]
 print(f"{'PASS' if ok else 'FAIL'}: ibForces rows after t0 identical ({len(ra)} rows; "
       f"sphere moved {1e3*(z0 - zA):.4f} mm down, w = {ra[-1][7] if ra else 0:.5g} m/s at t1)")
+
+# A restart time written by demIbFoam without its ibState stops (it used to
+# continue, not bit for bit): the restart from t0 again, ibState deleted
+caseC = case + "-noIbState"
+hc._workdirs.append(caseC)
+shutil.copytree(caseB, caseC)
+for t in glob.glob(os.path.join(caseC, "[0-9]*")):
+    if os.path.basename(t) not in ("0", f"{T0:g}"):
+        shutil.rmtree(t)
+os.remove(os.path.join(caseC, f"{T0:g}", "polyDEM", "ibState"))
+rc = hc.run("demIbFoam", caseC, "log.noIbState", check=False)
+logC = open(os.path.join(caseC, "log.noIbState")).read()
+ok = rc != 0 and "FOAM FATAL ERROR" in logC and f"{T0:g}/polyDEM/ibState" in logC
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: a restart from {T0:g} without polyDEM/ibState stops (exit {rc}) "
+      "with a FatalError naming it")
 hc.finish(results)

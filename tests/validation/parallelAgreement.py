@@ -48,7 +48,7 @@ def read_state(path):
 
 s0 = read_state(os.path.join(case, "0/polyDEM/state"))
 s = read_state(os.path.join(case, "0.1/polyDEM/state"))
-p = read_state(os.path.join(par, "processor0/0.1/polyDEM/state"))
+p = read_state(os.path.join(par, "0.1/polyDEM/state"))  # the case folder, also in parallel
 results = []
 ok = sorted(s) == sorted(p)
 results.append(ok)

@@ -23,6 +23,12 @@ Description
 
     Input syntax: docs/demProperties.md.
 
+    Parallel (-parallel, e.g. a stage of a decomposed coupled case run with
+    foamJob -parallel): the DEM is not decomposed. The master rank runs it
+    (with its OpenMP threads or GPU) and reads and writes the case folder,
+    <case>/<time>/polyDEM and <case>/*.pvd, as a serial run does; the other
+    ranks only follow the time loop. Extra ranks give no speed-up.
+
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -32,6 +38,8 @@ Description
 #include "demSimulation.H"
 
 #include "polyDEM/Error.hpp"
+
+#include <memory>
 
 using namespace Foam;
 
@@ -43,19 +51,17 @@ int main(int argc, char *argv[])
     (
         "DEM (polyDEM engine) alone, set up by constant/demProperties"
     );
-    argList::noParallel();
 
     #include "setRootCase.H"
     #include "createTime.H"
 
     // Engine errors (polydem::Error) name the demProperties entry at fault
-    const fileName propertiesPath(runTime.constantPath()/"demProperties");
-    const IOdictionary* propertiesPtr = nullptr;
+    autoPtr<IOdictionary> demPropertiesPtr;
+    std::unique_ptr<demSimulation> demPtr;
 
     try
     {
         #include "createDem.H"
-        propertiesPtr = &demProperties;
 
         Info<< "\nStarting time loop\n" << endl;
 
@@ -63,29 +69,38 @@ int main(int argc, char *argv[])
         {
             ++runTime;
 
-            dem.evolve();
-            dem.sample();
-            dem.write();
+            if (demPtr)
+            {
+                demPtr->evolve();
+                demPtr->sample();
+                demPtr->write();
+            }
 
             runTime.write();
         }
 
-        dem.report(true);
+        if (demPtr)
+        {
+            demPtr->report(true);
+        }
         runTime.printExecutionTime(Info);
     }
     catch (const polydem::Error& err)
     {
-        if (propertiesPtr)
+        // Only the rank that runs the DEM throws these (FatalIOError ends
+        // the parallel job)
+        if (demPropertiesPtr)
         {
-            demPropertiesReader::reportError(err, *propertiesPtr);
+            demPropertiesReader::reportError(err, demPropertiesPtr());
         }
-        // Failed while constructing: read the dictionary again to name it
+        // Failed while reading the dictionary: read it again to name it
+        Pstream::parRun() = false;
         IOdictionary demProperties
         (
             IOobject
             (
                 "demProperties",
-                runTime.constant(),
+                runTime.globalPath()/runTime.constant(),
                 runTime,
                 IOobject::MUST_READ,
                 IOobject::NO_WRITE

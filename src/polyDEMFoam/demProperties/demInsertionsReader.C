@@ -63,6 +63,11 @@ polydem::SizeDistribution Foam::demInsertionsReader::readDistribution
     }
     else
     {
+        demPropertiesErrors::checkKeys
+        (
+            dict, *dd, "insertion/" + id.dictName() + "/diameterDistribution",
+            {"type", "diameter", "min", "max", "mean", "standardDeviation", "fractions"}
+        );
         static const wordList kinds({"fixed", "uniform", "normal", "discrete"});
         const label kind = demPropertiesErrors::selectName(*dd, "type", kinds, "diameter distribution");
         switch (kind)
@@ -135,6 +140,11 @@ polydem::FillRegion Foam::demInsertionsReader::readRegion
 )
 {
     const dictionary& rd = id.subDict("region");
+    demPropertiesErrors::checkKeys
+    (
+        dict, rd, "insertion/" + id.dictName() + "/region",
+        {"type", "min", "max", "file", "scale"}
+    );
     static const wordList kinds({"box", "stl"});
     const label kind = demPropertiesErrors::selectName(rd, "type", kinds, "region type");
     if (kind == 0)
@@ -383,11 +393,29 @@ Foam::demInsertionsReader::read
                 << exit(FatalIOError);
         }
         const dictionary& id = e.dict();
+        static const wordList insertionKeys
+        ({
+            "type", "particleType", "time", "number", "seed", "gap",
+            "velocity", "orientation", "region", "diameterDistribution",
+            "particles"
+        });
+        demPropertiesErrors::checkKeys
+        (
+            dict, id, "insertion/" + e.keyword(), insertionKeys
+        );
         const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
         insertion ins;
         ins.name = e.keyword();
         ins.type = typeIndex(userTypes, id, "particleType");
         ins.time = id.getOrDefault<scalar>("time", -GREAT);
+        if (id.found("time", keyType::LITERAL) && !(ins.time >= 0))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword() << "/time' must be a "
+                << "time >= 0 [s] (leave it out to insert at the start), not "
+                << ins.time << ", in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
         if (kind == 1)
         {
             ins.kind = insertion::method::list;
@@ -398,6 +426,14 @@ Foam::demInsertionsReader::read
         ins.number = id.get<label>("number");
         ins.seed = id.getOrDefault<label>("seed", 1);
         ins.gap = id.getOrDefault<scalar>("gap", 0);
+        if (!(ins.gap >= 0))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword() << "/gap' must be >= 0 "
+                << "[m] (the smallest surface distance between inserted "
+                << "particles), not " << ins.gap << ", in " << dict.name()
+                << nl << exit(FatalIOError);
+        }
         ins.velocity = toVec3(id.getOrDefault<vector>("velocity", Zero));
         if (id.found("orientation", keyType::LITERAL))
         {

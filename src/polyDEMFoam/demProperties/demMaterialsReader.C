@@ -7,6 +7,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "demMaterialsReader.H"
+#include "demPropertiesErrors.H"
 #include "IOstreams.H"
 #include "wordList.H"
 
@@ -62,6 +63,11 @@ void Foam::demMaterialsReader::readMaterials
                 << exit(FatalIOError);
         }
         const dictionary& md = e.dict();
+        demPropertiesErrors::checkKeys
+        (
+            dict, md, "materials/" + e.keyword(),
+            {"youngsModulus", "poissonsRatio", "density"}
+        );
         polydem::Material m;
         m.name = e.keyword();
         m.youngsModulus = md.get<scalar>("youngsModulus");
@@ -95,6 +101,15 @@ void Foam::demMaterialsReader::readInteractions
 
     auto readPair = [&](const dictionary& pd, polydem::PairProperties& p)
     {
+        static const wordList pairKeys
+        ({
+            "materials", "restitution", "friction", "rollingFriction",
+            "rollingDamping", "twistingFriction"
+        });
+        demPropertiesErrors::checkKeys
+        (
+            dict, pd, "interactions/" + pd.dictName(), pairKeys
+        );
         p.restitution = pd.get<scalar>("restitution");
         p.friction = pd.get<scalar>("friction");
         if (rolling)

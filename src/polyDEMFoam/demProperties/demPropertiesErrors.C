@@ -10,6 +10,40 @@ Description
 #include "demPropertiesErrors.H"
 #include "IOstreams.H"
 
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Levenshtein distance, case-insensitive (a hint for misspellings)
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+    {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t up = row[j];
+            const bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+} // End anonymous namespace
+
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
 
 Foam::label Foam::demPropertiesErrors::selectName
@@ -48,6 +82,58 @@ Foam::label Foam::demPropertiesErrors::selectNameOrDefault
         return deflt;
     }
     return selectName(d, key, valid, what);
+}
+
+
+void Foam::demPropertiesErrors::checkKeys
+(
+    const dictionary& top,
+    const dictionary& d,
+    const std::string& where,
+    const wordList& valid
+)
+{
+    for (const entry& e : d)
+    {
+        const word& key = e.keyword();
+        // OpenFOAM's own: the file header, #-directives and $-variables
+        // kept as entries
+        if (key == "FoamFile" || key.empty() || key[0] == '#')
+        {
+            continue;
+        }
+        if (valid.found(key))
+        {
+            continue;
+        }
+        word closest;
+        std::size_t best = 3;
+        for (const word& v : valid)
+        {
+            const std::size_t dist = editDistance(key, v);
+            if (dist < best)
+            {
+                best = dist;
+                closest = v;
+            }
+        }
+        const std::string path = where.empty() ? std::string(key) : where + "/" + key;
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            top.name(), e.startLineNumber()
+        )
+            << "Unknown entry '" << path.c_str() << "' in " << top.name()
+            << nl;
+        if (!closest.empty())
+        {
+            FatalIOError<< "    did you mean '" << closest << "'?" << nl;
+        }
+        FatalIOError
+            << "Valid entries" << (where.empty() ? "" : " of '")
+            << where.c_str() << (where.empty() ? "" : "'") << ": " << valid
+            << nl << exit(FatalIOError);
+    }
 }
 
 

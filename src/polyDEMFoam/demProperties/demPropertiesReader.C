@@ -26,6 +26,15 @@ using Foam::polyDEMConversions::toVec3;
 
 void Foam::demPropertiesReader::readGeneral()
 {
+    // 'monitors' is refused later with a message saying where it moved
+    static const wordList topKeys
+    ({
+        "device", "timeStep", "gravity", "skin", "domain", "contactModel",
+        "materials", "interactions", "particleTypes", "walls", "insertion",
+        "output", "reportInterval", "freshStart", "monitors"
+    });
+    demPropertiesErrors::checkKeys(dict_, dict_, "", topKeys);
+
     config_.source = dict_.name();
     config_.device = dict_.getOrDefault<word>("device", "cpu");
     config_.timeStep = dict_.get<scalar>("timeStep");
@@ -41,9 +50,17 @@ void Foam::demPropertiesReader::readGeneral()
     }
     config_.gravity = toVec3(dict_.getOrDefault<vector>("gravity", vector(0, 0, -9.81)));
     config_.skinFraction = dict_.getOrDefault<scalar>("skin", 0.2);
+    if (!(config_.skinFraction > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'skin' must be positive (a fraction of the largest "
+            << "diameter), not " << config_.skinFraction << ", in "
+            << dict_.name() << nl << exit(FatalIOError);
+    }
 
     if (const dictionary* dom = dict_.findDict("domain"))
     {
+        demPropertiesErrors::checkKeys(dict_, *dom, "domain", {"min", "max"});
         config_.domainMin = toVec3(dom->get<vector>("min"));
         config_.domainMax = toVec3(dom->get<vector>("max"));
         for (int k = 0; k < 3; ++k)
@@ -63,6 +80,14 @@ void Foam::demPropertiesReader::readGeneral()
 void Foam::demPropertiesReader::readContactModel()
 {
     const dictionary& d = dict_.subDict("contactModel");
+    demPropertiesErrors::checkKeys
+    (
+        dict_, d, "contactModel",
+        {
+            "law", "rolling", "twisting", "normalStiffness",
+            "volumetricStiffness", "tangentialStiffnessRatio"
+        }
+    );
 
     static const wordList laws
     ({
@@ -111,8 +136,17 @@ void Foam::demPropertiesReader::readOutput()
     stateFormat_ = polydem::StateFormat::ascii;
     writeVtk_ = true;
     reportInterval_ = dict_.getOrDefault<scalar>("reportInterval", 5);
+    if (!(reportInterval_ >= 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'reportInterval' must be >= 0 [s of wall time], not "
+            << reportInterval_ << ", in " << dict_.name() << nl
+            << exit(FatalIOError);
+    }
+    freshStart_ = dict_.getOrDefault<bool>("freshStart", false);
     if (const dictionary* od = dict_.findDict("output"))
     {
+        demPropertiesErrors::checkKeys(dict_, *od, "output", {"format", "vtk"});
         static const wordList formats({"ascii", "binary"});
         stateFormat_ = polydem::StateFormat
         (
@@ -180,6 +214,7 @@ Foam::demPropertiesReader::demPropertiesReader(const dictionary& demProperties)
     stateFormat_(polydem::StateFormat::ascii),
     writeVtk_(true),
     reportInterval_(5),
+    freshStart_(false),
     sceneSize_(0.1)
 {
     readGeneral();

@@ -353,6 +353,11 @@ std::vector<Foam::demShapesReader::userType> Foam::demShapesReader::read
                 << exit(FatalIOError);
         }
         const dictionary& td = e.dict();
+        demPropertiesErrors::checkKeys
+        (
+            dict, td, "particleTypes/" + e.keyword(),
+            {"shape", "material", "diameter", "geometry"}
+        );
         userType u;
         u.name = e.keyword();
         u.firstType = int(config.types.size());

@@ -20,6 +20,7 @@ using Foam::polyDEMConversions::toVec3;
 
 polydem::WallMotion Foam::demWallsReader::readMotion
 (
+    const dictionary& demProperties,
     const dictionary& wallDict
 )
 {
@@ -29,6 +30,11 @@ polydem::WallMotion Foam::demWallsReader::readMotion
     {
         return m;
     }
+    demPropertiesErrors::checkKeys
+    (
+        demProperties, *md, "walls/" + wallDict.dictName() + "/motion",
+        {"type", "velocity", "origin", "axis", "rpm", "omega"}
+    );
     static const wordList kinds({"fixed", "translation", "rotation"});
     m.kind = polydem::MotionKind
     (
@@ -83,9 +89,23 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
                 << dict.name() << nl << exit(FatalIOError);
         }
         const dictionary& wd = e.dict();
+        static const wordList wallKeys
+        ({
+            "type", "point", "normal", "material", "motion", "file", "scale",
+            "activeUntil", "displaySize"
+        });
+        demPropertiesErrors::checkKeys(dict, wd, "walls/" + e.keyword(), wallKeys);
         wallInfo info;
         info.name = e.keyword();
         info.activeUntil = wd.getOrDefault<scalar>("activeUntil", GREAT);
+        if (!(info.activeUntil >= 0))
+        {
+            FatalIOErrorInFunction(wd)
+                << "Entry 'walls/" << e.keyword() << "/activeUntil' must be a "
+                << "time >= 0 [s] (leave it out for a wall that stays), not "
+                << info.activeUntil << ", in " << dict.name() << nl
+                << exit(FatalIOError);
+        }
         info.displaySize = wd.getOrDefault<scalar>("displaySize", 0);
 
         const label kind =
@@ -97,7 +117,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             w.point = toVec3(wd.get<vector>("point"));
             w.normal = toVec3(wd.get<vector>("normal"));
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
-            w.motion = readMotion(wd);
+            w.motion = readMotion(dict, wd);
             info.isPlane = true;
             info.index = label(config.planes.size());
             config.planes.push_back(w);
@@ -107,7 +127,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             polydem::MeshWall w;
             w.name = e.keyword();
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
-            w.motion = readMotion(wd);
+            w.motion = readMotion(dict, wd);
             w.mesh = demSurfaceReader::read
             (
                 dict, wd, "file", "walls/" + e.keyword() + "/file"

@@ -39,6 +39,14 @@ static std::string hms(double s)
     return buf;
 }
 
+//- A checksum as the state file writes it
+static std::string hex16(std::uint64_t x)
+{
+    char buf[24];
+    std::snprintf(buf, sizeof(buf), "%016llx", static_cast<unsigned long long>(x));
+    return buf;
+}
+
 } // End namespace Foam
 
 
@@ -72,7 +80,9 @@ Foam::label Foam::demSimulation::computeStepsPerDeltaT() const
 
 Foam::fileName Foam::demSimulation::casePath() const
 {
-    return globalOutput_ ? runTime_.globalPath() : runTime_.path();
+    // The case folder also in a parallel run: the DEM is not decomposed,
+    // so its state stays where decomposePar and reconstructPar leave it
+    return runTime_.globalPath();
 }
 
 
@@ -341,7 +351,11 @@ void Foam::demSimulation::writeState()
     const fileName dir(timePath()/"polyDEM");
     mkDir(dir);
     const polydem::Snapshot state = system_->engine().snapshot();
-    polydem::writeSnapshot(dir/"state", state, input_.stateFormat());
+    polydem::writeSnapshot
+    (
+        dir/"state", state, input_.stateFormat(),
+        polydem::stateTypeRecords(input_.config())
+    );
 
     if (input_.writeVtk())
     {
@@ -372,19 +386,157 @@ void Foam::demSimulation::writeState()
 }
 
 
+Foam::fileName Foam::demSimulation::restartEvidence() const
+{
+    // uniform/time is written by Time at every write time of a solver (and
+    // carried by decomposePar and reconstructPar); a polyDEM folder by an
+    // earlier DEM run
+    const fileName candidates[3] =
+    {
+        runTime_.timePath()/"uniform"/"time",
+        timePath()/"uniform"/"time",
+        timePath()/"polyDEM"
+    };
+    for (const fileName& f : candidates)
+    {
+        if (isFile(f) || isDir(f))
+        {
+            return f;
+        }
+    }
+    return fileName();
+}
+
+
+Foam::word Foam::demSimulation::userTypeOf(const label engineType) const
+{
+    for (const auto& u : input_.userTypes())
+    {
+        if (engineType >= u.firstType && engineType < u.firstType + u.nTypes)
+        {
+            return u.name;
+        }
+    }
+    return word("?");
+}
+
+
+void Foam::demSimulation::checkState
+(
+    const fileName& statePath,
+    const polydem::StateFileInfo& info,
+    const polydem::Snapshot& state
+) const
+{
+    const dictionary& dict = input_.dict();
+    const auto& types = input_.config().types;
+    const entry* typesEntry = dict.findEntry("particleTypes", keyType::LITERAL);
+    const label line = typesEntry ? typesEntry->startLineNumber() : -1;
+
+    if (!info.checksummed)
+    {
+        WarningInFunction
+            << "The state " << statePath << " has no checksum line (written "
+            << "by hand or by an earlier Hedra, file version " << info.version
+            << "): its contents are read unchecked" << endl;
+    }
+
+    if (info.types.empty())
+    {
+        WarningInFunction
+            << "The state " << statePath << " does not record its particle "
+            << "types (file version " << info.version << "): its type "
+            << "indices are taken to be those of entry 'particleTypes' of "
+            << dict.name() << " as it is now, unchecked" << endl;
+        for (size_t i = 0; i < state.particles.size(); ++i)
+        {
+            const int t = state.particles.type[i];
+            if (t < 0 || size_t(t) >= types.size())
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__, dict.name(), line
+                )
+                    << "Particle id " << label(state.particles.id[i])
+                    << " of the state " << statePath << " has type index "
+                    << t << ", but entry 'particleTypes' of " << dict.name()
+                    << " gives " << label(types.size()) << " types" << nl
+                    << exit(FatalIOError);
+            }
+        }
+        return;
+    }
+
+    // Names, by index: a reordered, renamed, added or removed type would
+    // give the particles of one type the properties of another
+    bool namesMatch = info.types.size() == types.size();
+    for (size_t k = 0; namesMatch && k < types.size(); ++k)
+    {
+        namesMatch = info.types[k].name == types[k].name;
+    }
+    if (!namesMatch)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, dict.name(), line)
+            << "The particle types of the state " << statePath << nl
+            << "    do not match entry 'particleTypes' of " << dict.name()
+            << nl << "    state (by type index):";
+        for (const auto& t : info.types)
+        {
+            FatalIOError<< ' ' << t.name.c_str();
+        }
+        FatalIOError<< nl << "    particleTypes now:      ";
+        for (const auto& t : types)
+        {
+            FatalIOError<< ' ' << t.name.c_str();
+        }
+        FatalIOError
+            << nl << "A restart would give the particles of one type the "
+            << "shape and material of another. Give particleTypes the types "
+            << "(names, order, number of shapes) the state was written "
+            << "with, or start afresh from another time." << nl
+            << exit(FatalIOError);
+    }
+
+    for (size_t k = 0; k < types.size(); ++k)
+    {
+        const std::uint64_t now = polydem::shapeChecksum(input_.config(), int(k));
+        if (now != info.types[k].shapeChecksum)
+        {
+            const word userType(userTypeOf(label(k)));
+            const entry* e = typesEntry && typesEntry->isDict()
+                ? typesEntry->dict().findEntry(userType, keyType::LITERAL)
+                : nullptr;
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, dict.name(),
+                e ? e->startLineNumber() : line
+            )
+                << "The shape of particle type '" << types[k].name.c_str()
+                << "' (entry 'particleTypes/" << userType << "' of "
+                << dict.name() << ")" << nl
+                << "    differs from the one the state " << statePath
+                << " was written with (shape checksum "
+                << hex16(info.types[k].shapeChecksum).c_str()
+                << " in the state, " << hex16(now).c_str() << " now)." << nl
+                << "The particles' orientations, radii and masses belong to "
+                << "the old shape: restore its geometry, or start afresh."
+                << nl << exit(FatalIOError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demSimulation::demSimulation
 (
     const Time& runTime,
-    const IOdictionary& properties,
-    const bool globalOutput
+    const IOdictionary& properties
 )
 :
     demParticleSource(runTime),
     runTime_(runTime),
     properties_(properties),
-    globalOutput_(globalOutput),
     input_(properties),
     system_(),
     wallActive_(input_.walls().size(), true),
@@ -425,7 +577,9 @@ Foam::demSimulation::demSimulation
     if (restart)
     {
         Info<< "DEM: restarting from " << statePath << endl;
-        polydem::Snapshot state = polydem::readSnapshot(statePath);
+        polydem::StateFileInfo info;
+        polydem::Snapshot state = polydem::readSnapshot(statePath, &info);
+        checkState(statePath, info, state);
         if (mag(state.time - runTime_.value()) > 1e-6*runTime_.deltaTValue())
         {
             WarningInFunction
@@ -461,6 +615,31 @@ Foam::demSimulation::demSimulation
     }
     else
     {
+        // A time written by a run (fluid or DEM) without the DEM state: the
+        // state was lost (deleted, not carried by a copy or a
+        // decomposition); re-inserting would replace a settled bed by new
+        // particles without a word
+        const fileName evidence(restartEvidence());
+        if (!evidence.empty() && !input_.freshStart())
+        {
+            const dictionary& dict = input_.dict();
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, dict.name(), -1)
+                << "The start time " << runTime_.timeName() << " is a restart "
+                << "time (" << evidence << " exists)" << nl
+                << "    but it has no DEM state: " << statePath
+                << " is missing." << nl
+                << "The DEM state lives in the case folder also for parallel "
+                << "runs (<case>/<time>/polyDEM). Restore it, restart from "
+                << "a time that has it, or, to insert new particles at this "
+                << "time on purpose, set" << nl
+                << "    freshStart true;" << nl
+                << "in " << dict.name() << nl << exit(FatalIOError);
+        }
+        if (!evidence.empty())
+        {
+            Info<< "DEM: freshStart true: new particles at the restart time "
+                << runTime_.timeName() << " (no " << statePath << ")" << endl;
+        }
         Info<< "DEM: fresh start at t = " << runTime_.value()
             << " s (no " << statePath << ")" << endl;
 

@@ -74,18 +74,16 @@ bool readVectors
 }
 
 
-Foam::demBackend::demBackend(const Time& runTime, const bool globalOutput)
+Foam::demBackend::demBackend(const Time& runTime)
 :
-    runTime_(runTime),
-    globalOutput_(globalOutput)
+    runTime_(runTime)
 {}
 
 
 Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
 (
     const Time& runTime,
-    const dictionary& dict,
-    const bool globalOutput
+    const dictionary& dict
 )
 {
     const word modelType(dict.getOrDefault<word>("demBackend", "polyDEM"));
@@ -101,14 +99,14 @@ Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
     }
     return autoPtr<demBackend>
     (
-        cstrIter()(modelType, runTime, dict, globalOutput)
+        cstrIter()(modelType, runTime, dict)
     );
 }
 
 
 Foam::fileName Foam::demBackend::casePath() const
 {
-    return globalOutput_ ? runTime_.globalPath() : runTime_.path();
+    return runTime_.globalPath();
 }
 
 

@@ -12,11 +12,10 @@ Foam::fixedBackend::fixedBackend
 (
     const word& modelType,
     const Time& runTime,
-    const dictionary& dict,
-    const bool globalOutput
+    const dictionary& dict
 )
 :
-    demBackend(runTime, globalOutput),
+    demBackend(runTime),
     bodies_()
 {
     const List<dictionary> list(dict.lookup("bodies"));

@@ -91,11 +91,10 @@ Foam::polyDEMBackend::polyDEMBackend
 (
     const word& modelType,
     const Time& runTime,
-    const dictionary& dict,
-    const bool globalOutput
+    const dictionary& dict
 )
 :
-    demBackend(runTime, globalOutput),
+    demBackend(runTime),
     parRunGuard_(),
     demProperties_
     (
@@ -117,7 +116,7 @@ Foam::polyDEMBackend::polyDEMBackend
 {
     try
     {
-        dem_.reset(new demSimulation(runTime, demProperties_, globalOutput));
+        dem_.reset(new demSimulation(runTime, demProperties_));
     }
     catch (const polydem::Error& err)
     {

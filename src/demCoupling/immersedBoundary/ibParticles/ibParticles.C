@@ -108,12 +108,12 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
             << " (integrated | rigid | none)" << exit(FatalIOError);
     }
 
-    // The DEM runs once, on the master, writing to the case folder
-    // (globalOutput); the other ranks get the bodies (scatterBodies)
+    // The DEM runs once, on the master, writing to the case folder; the
+    // other ranks get the bodies (scatterBodies)
     const dictionary selection(backendSelection());
     if (Pstream::master())
     {
-        backend_ = demBackend::New(mesh.time(), selection, true);
+        backend_ = demBackend::New(mesh.time(), selection);
         g_ = backend_->gravity();
         shapes_.setSize(backend_->typeNames().size());
         forAll(shapes_, t)

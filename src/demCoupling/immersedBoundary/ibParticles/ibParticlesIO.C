@@ -12,7 +12,8 @@ Description
         previousP          sum lambda U V of the last step (integrated)
         previousL          sum lambda r x U V of the last step (integrated)
     written with 17 digits, so that a restarted run continues bit for bit
-    (with the fields written in binary or with writePrecision 17).
+    (with the fields written in binary or with writePrecision 17). A start
+    time written by demIbFoam (it holds fIB) without ibState is an error.
 
 \*---------------------------------------------------------------------------*/
 
@@ -62,6 +63,33 @@ void Foam::ibParticles::readState()
             previousL_ = d.get<Map<vector>>("previousL");
             Info<< "ibParticles: restart state read from " << f << endl;
             found = true;
+        }
+        else
+        {
+            // fIB is written by demIbFoam at its write times (and carried by
+            // decomposePar and reconstructPar): such a time also carries
+            // ibState, without which the first step would not continue the
+            // run that wrote it
+            const Time& runTime = mesh_.time();
+            const fileName written[2] =
+            {
+                runTime.timePath()/"fIB",
+                runTime.globalPath()/runTime.timeName()/"fIB"
+            };
+            for (const fileName& w : written)
+            {
+                if (isFile(w) || isFile(w + ".gz"))
+                {
+                    FatalErrorInFunction
+                        << "The start time " << runTime.timeName()
+                        << " was written by demIbFoam (" << w << " exists)"
+                        << nl << "    but " << f << " is missing: the "
+                        << "bodies' previous velocity and internal-fluid "
+                        << "momentum, written with the DEM state." << nl
+                        << "Restore it, or restart from a time that has it."
+                        << exit(FatalError);
+                }
+            }
         }
     }
     Pstream::scatter(found);

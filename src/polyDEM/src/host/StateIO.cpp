@@ -3,6 +3,7 @@
 #include "polyDEM/Error.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -13,7 +14,11 @@ namespace
 {
 
 const char* magic = "polyDEMState";
-const int version = 1;
+const int version = 2;
+
+//- The last line of a version-2 file: "checksum " + 16 hex digits + newline
+const std::size_t checksumKeyLength = 9;
+const std::size_t checksumLineLength = checksumKeyLength + 16 + 1;
 
 // The per-particle record: the order of the columns in both formats
 template<class Visit>
@@ -114,14 +119,62 @@ private:
 } // namespace
 
 
-void writeSnapshot(const std::string& path, const Snapshot& s, StateFormat format)
+std::uint64_t fnv1a(const char* data, std::size_t n, std::uint64_t h)
+{
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        h ^= static_cast<unsigned char>(data[i]);
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+
+std::uint64_t shapeChecksum(const SimulationConfig& config, int t)
+{
+    const ParticleType& type = config.types.at(std::size_t(t));
+    std::string text = type.shape == ShapeKind::polyhedron ? "polyhedron" : "sphere";
+    if (type.shape == ShapeKind::polyhedron && type.shapeIndex >= 0
+        && std::size_t(type.shapeIndex) < config.shapes.size())
+    {
+        const ConvexShape& c = config.shapes[std::size_t(type.shapeIndex)];
+        char buf[96];
+        for (const Vec3& v : c.vertices)
+        {
+            std::snprintf(buf, sizeof buf, " %.12g %.12g %.12g", v.x, v.y, v.z);
+            text += buf;
+        }
+        text += " |";
+        for (int k : c.faceStart) text += ' ' + std::to_string(k);
+        text += " |";
+        for (int k : c.faceVertex) text += ' ' + std::to_string(k);
+    }
+    return fnv1a(text.data(), text.size());
+}
+
+
+std::vector<StateTypeRecord> stateTypeRecords(const SimulationConfig& config)
+{
+    std::vector<StateTypeRecord> records(config.types.size());
+    for (std::size_t t = 0; t < records.size(); ++t)
+    {
+        records[t].name = config.types[t].name;
+        records[t].shapeChecksum = shapeChecksum(config, int(t));
+    }
+    return records;
+}
+
+
+void writeSnapshot
+(
+    const std::string& path,
+    const Snapshot& s,
+    StateFormat format,
+    const std::vector<StateTypeRecord>& types
+)
 {
     const bool binary = format == StateFormat::binary;
-    std::ofstream os(path, std::ios::binary);
-    if (!os)
-    {
-        throw Error("cannot open for writing", path);
-    }
+    std::ostringstream os(std::ios::binary);
     // The header is text in both formats
     os << magic << ' ' << version << ' ' << (binary ? "binary" : "ascii") << '\n';
     char buf[64];
@@ -130,7 +183,17 @@ void writeSnapshot(const std::string& path, const Snapshot& s, StateFormat forma
        << "\nparticles " << s.particles.size() << "\npairs " << s.pairs.size()
        << "\nwalls " << s.walls.size()
        << "\nexternal " << (s.externalForce.empty() ? 0 : 1) << ' ' << (s.externalTorque.empty() ? 0 : 1)
-       << "\ndata\n";
+       << "\ntypes " << types.size() << '\n';
+    for (const StateTypeRecord& t : types)
+    {
+        if (t.name.empty() || t.name.find_first_of(" \t\n") != std::string::npos)
+        {
+            throw Error("particle type name '" + t.name + "' is empty or has white space", path);
+        }
+        std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(t.shapeChecksum));
+        os << "type " << t.name << ' ' << buf << '\n';
+    }
+    os << "data\n";
 
     ParticleState& p = const_cast<ParticleState&>(s.particles);
     for (std::size_t i = 0; i < p.size(); ++i)
@@ -169,27 +232,95 @@ void writeSnapshot(const std::string& path, const Snapshot& s, StateFormat forma
         writeVec(os, t, binary);
         if (!binary) os << '\n';
     }
-    if (!os)
+
+    std::string content = os.str();
+    std::snprintf
+    (
+        buf, sizeof buf, "checksum %016llx\n",
+        static_cast<unsigned long long>(fnv1a(content.data(), content.size()))
+    );
+    content += buf;
+
+    const std::string tmp = path + ".tmp";
     {
-        throw Error("write failed (disk full?)", path);
+        std::ofstream file(tmp, std::ios::binary | std::ios::trunc);
+        if (!file)
+        {
+            throw Error("cannot open for writing", tmp);
+        }
+        file.write(content.data(), std::streamsize(content.size()));
+        file.flush();
+        if (!file)
+        {
+            std::remove(tmp.c_str());
+            throw Error("write failed (disk full?)", tmp);
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        std::remove(tmp.c_str());
+        throw Error("cannot rename " + tmp + " to the state file", path);
     }
 }
 
 
-Snapshot readSnapshot(const std::string& path)
+Snapshot readSnapshot(const std::string& path, StateFileInfo* info)
 {
-    std::ifstream is(path, std::ios::binary);
-    if (!is)
+    std::string content;
     {
-        throw Error("cannot open state file", path);
+        std::ifstream file(path, std::ios::binary);
+        if (!file)
+        {
+            throw Error("cannot open state file", path);
+        }
+        std::ostringstream all;
+        all << file.rdbuf();
+        content = all.str();
     }
+
+    StateFileInfo found;
+    {
+        std::istringstream head(content.substr(0, 64));
+        std::string m, fmt;
+        head >> m >> found.version >> fmt;
+        if (m != magic || found.version < 1 || found.version > version || (fmt != "ascii" && fmt != "binary"))
+        {
+            throw Error("not a polyDEM state file (versions 1-2, ascii or binary)", path);
+        }
+    }
+
+    // The checksum line, when there is one, covers every byte before it
+    if (found.version >= 2 && content.size() >= checksumLineLength
+        && content.compare(content.size() - checksumLineLength, checksumKeyLength, "checksum ") == 0
+        && content.back() == '\n')
+    {
+        const std::size_t body = content.size() - checksumLineLength;
+        const std::string stored = content.substr(body + checksumKeyLength, 16);
+        char computed[32];
+        std::snprintf
+        (
+            computed, sizeof computed, "%016llx",
+            static_cast<unsigned long long>(fnv1a(content.data(), body))
+        );
+        if (stored != computed)
+        {
+            throw Error
+            (
+                "checksum mismatch (stored " + stored + ", contents give " + computed
+                    + "): the state file was changed or damaged after it was written. "
+                    "Restart from another time, or, for a state edited on purpose, "
+                    "delete its last line (checksum) to have it read unchecked",
+                path
+            );
+        }
+        content.resize(body);
+        found.checksummed = true;
+    }
+
+    std::istringstream is(content, std::ios::binary);
     std::string m, fmt;
     int ver = 0;
     is >> m >> ver >> fmt;
-    if (m != magic || ver != version || (fmt != "ascii" && fmt != "binary"))
-    {
-        throw Error("not a polyDEM state file (version 1, ascii or binary)", path);
-    }
     const bool binary = fmt == "binary";
     Reader text(is, path, false);
     Snapshot s;
@@ -208,6 +339,28 @@ Snapshot readSnapshot(const std::string& path)
     text.keyword("external");
     const bool hasForce = text.integer("external force flag") != 0;
     const bool hasTorque = text.integer("external torque flag") != 0;
+    if (ver >= 2)
+    {
+        text.keyword("types");
+        const std::int64_t ntype = text.integer("type count");
+        if (ntype < 0 || ntype > 1000000)
+        {
+            text.fail("a type count of 0 to 1000000");
+        }
+        found.types.resize(std::size_t(ntype));
+        for (StateTypeRecord& t : found.types)
+        {
+            text.keyword("type");
+            std::string hex;
+            is >> t.name >> hex;
+            char* end = nullptr;
+            t.shapeChecksum = std::strtoull(hex.c_str(), &end, 16);
+            if (!is || hex.size() != 16 || !end || *end != '\0')
+            {
+                text.fail("'type <name> <16 hex digits>'");
+            }
+        }
+    }
     text.keyword("data");
     is.get(); // the newline after 'data'
     if (np < 0 || npair < 0 || nwall < 0)
@@ -253,6 +406,39 @@ Snapshot readSnapshot(const std::string& path)
     {
         s.externalTorque.resize(p.size());
         for (Vec3& t : s.externalTorque) t = r.vec("external torque");
+    }
+
+    // Nothing may follow the records but white space (a damaged checksum
+    // line, or records the header does not count)
+    is >> std::ws;
+    if (is.peek() != std::char_traits<char>::eof())
+    {
+        std::string rest;
+        std::getline(is, rest);
+        throw Error
+        (
+            "unexpected content after the records the header counts ('" + rest.substr(0, 40)
+                + "'): a damaged or foreign state file",
+            path
+        );
+    }
+
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        if (p.type[i] < 0 || (!found.types.empty() && std::size_t(p.type[i]) >= found.types.size()))
+        {
+            throw Error
+            (
+                "particle id " + std::to_string(p.id[i]) + " has type index " + std::to_string(p.type[i])
+                    + ", outside the " + std::to_string(found.types.size()) + " types of the header",
+                path
+            );
+        }
+    }
+
+    if (info)
+    {
+        *info = std::move(found);
     }
     return s;
 }
