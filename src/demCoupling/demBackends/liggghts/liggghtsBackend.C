@@ -192,10 +192,11 @@ Foam::liggghtsBackend::liggghtsBackend
     const std::array<double, 3> g(lib_->gravity());
     gravity_ = vector(g[0], g[1], g[2]);
 
+    const label nSteps = stepsPerFluidStep();
     Info<< "liggghtsBackend: " << typeDensity_.size() << " atom type(s),"
         << " densities " << typeDensity_ << " kg/m3, gravity " << gravity_
         << " m/s2, timestep " << lib_->timeStep() << " s, "
-        << stepsPerFluidStep() << " DEM steps per fluid step, time "
+        << nSteps << " DEM steps per fluid step, time "
         << lib_->time() << " s" << endl;
 }
 
