@@ -1,5 +1,9 @@
 #!/usr/bin/env python3
-"""Packed bed with the LIGGGHTS back end: the same bed, two DEMs.
+"""Packed and fluidised bed with the LIGGGHTS back end: the same bed, two
+DEMs.
+
+    python3 liggghtsErgunBed.py               packed bed (below U_mf)
+    python3 liggghtsErgunBed.py -fluidised    fluidised bed (above U_mf)
 
 ergunBed.py's bed (2000 spheres d = 1 mm, rho_p 2000, 12 x 12 mm box, DEM
 floor 4 mm above the inlet) poured by demFoam (polyDEM), then gas (rho 10,
@@ -19,8 +23,16 @@ Measured 2026-12-01 (apply-ev2 + liggghts-14): LIGGGHTS vs polyDEM 0.10,
 0.014, 0.027 %; vs Ergun +5.3, +5.1, +5.0 %: the Ergun check fails at the
 two lower velocities, as ergunBed.py does on the same bed (polyDEM +5.2,
 +5.1, +5.0 %): the pour and the fluid side, not the back end.
+
+-fluidised: gas at 0.025 and 0.03 m/s (about 2 U_mf), 0.05 s each, from the
+same poured bed; the bed fluidises (bubbles, slugs in the narrow column:
+chaotic, the two DEMs' particles part after a few steps). Checked, as
+fluidisation.py: the time average of dp over the second half of each
+plateau against the buoyant bed weight per area Vs (rho_p - rho) g / A:
+5 %, and the LIGGGHTS average against the polyDEM one: 2 %.
 """
 import os
+import sys
 import hedracase as hc
 import liggghtscase as lc
 
@@ -28,12 +40,14 @@ d, rhoP, rho, nu = 1e-3, 2000.0, 10.0, 1.5e-4
 mu = rho * nu
 W, H, zFloor = 0.012, 0.04, 0.004
 N = 2000
-U_levels = [0.002, 0.004, 0.007]
-tSettle, plateau, dtF = 0.25, 0.02, 1e-4
+fluidised = "-fluidised" in sys.argv[1:]
+U_levels = [0.025, 0.03] if fluidised else [0.002, 0.004, 0.007]
+tSettle, plateau, dtF = 0.25, 0.05 if fluidised else 0.02, 1e-4
 tstr = f"{tSettle:g}"
 tEnd = tSettle + plateau * len(U_levels)
 
-case = hc.workdir("liggghts-ergun-polyDEM")
+tag = "fluidised" if fluidised else "ergun"
+case = hc.workdir(f"liggghts-{tag}-polyDEM")
 hc.block_mesh(case, (0, 0, 0), (W, W, H), (1, 1, 20),
               {"inlet": ("patch", ["zmin"]), "outlet": ("patch", ["zmax"]),
                "sides": ("empty", ["xmin", "xmax", "ymin", "ymax"])})
@@ -96,7 +110,7 @@ def poured(path):
 
 
 positions = poured(os.path.join(case, tstr, "polyDEM/state"))
-lig = hc.workdir("liggghts-ergun-liggghts")
+lig = hc.workdir(f"liggghts-{tag}-liggghts")
 import shutil
 shutil.rmtree(lig)
 shutil.copytree(case, lig, ignore=shutil.ignore_patterns("polyDEM", "postProcessing", "log.*"))
@@ -117,6 +131,22 @@ L, eps = bed["L"], bed["eps"]
 
 rowsP = hc.read_inlet_p(case, tstr)
 rowsL = hc.read_inlet_p(lig, tstr)
+results = []
+if fluidised:
+    weight = bed["Vs"] * (rhoP - rho) * 9.81 / bed["A"]
+    print(f"buoyant bed weight per area {weight:.4f} Pa")
+    for k, Uk in enumerate(U_levels):
+        a, e = tSettle + (k + 0.5) * plateau, tSettle + (k + 1) * plateau
+        dp = []
+        for rows in (rowsP, rowsL):
+            sel = [pin for t, pin in rows if a <= t <= e + 1e-9]
+            dp.append(rho * sum(sel) / len(sel) - rho * 9.81 * H)
+        print(f"U = {Uk} m/s: mean dp polyDEM {dp[0]:.4f} Pa, LIGGGHTS {dp[1]:.4f} Pa")
+        hc.check(f"LIGGGHTS fluidised dp at U = {Uk} m/s vs bed weight", dp[1], weight, 0.05,
+                 results)
+        hc.check(f"LIGGGHTS fluidised dp at U = {Uk} m/s vs polyDEM", dp[1], dp[0], 0.02,
+                 results)
+    hc.finish(results)
 results = []
 print(f"{'U [m/s]':>8} {'dp polyDEM':>11} {'dp LIGGGHTS':>12} {'dp Ergun':>9}")
 for k, Uk in enumerate(U_levels):
