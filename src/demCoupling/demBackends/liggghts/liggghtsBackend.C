@@ -322,6 +322,13 @@ void Foam::liggghtsBackend::setForces
             << T.size() << " handed over; the last particles() gave "
             << ids_.size() << exit(FatalError);
     }
+    if (T.size() && !lib_->hasAtomVector("hdtorque"))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Torques handed over, but fix couple/cfd/force of the LIGGGHTS"
+            << " script " << script_ << " holds no hdtorque (torque transfer"
+            << " off): the torques would be lost" << exit(FatalIOError);
+    }
     std::vector<int> ids(ids_.begin(), ids_.end());
     std::vector<double> f(3*F.size()), t(3*T.size());
     forAll(F, i)

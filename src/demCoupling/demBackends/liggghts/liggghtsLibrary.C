@@ -3,6 +3,13 @@
 
 #include "liggghtsLibrary.H"
 
+// MPI's C API only (its C++ bindings are not used); the MPI and LIGGGHTS
+// headers are not written for OpenFOAM's warning flags
+#define OMPI_SKIP_MPICXX 1
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wcast-function-type"
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 #include <mpi.h>
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +29,7 @@
 #include <liggghts/fix_gravity.h>
 #include <liggghts/fix_cfd_coupling.h>
 #include <liggghts/cfd_datacoupling_mpi.h>
+#pragma GCC diagnostic pop
 
 
 namespace
