@@ -49,7 +49,10 @@ Foam::demCloud::demCloud
     forces_(),
     io_(mesh_.time())
 {
-    if (Pstream::master())
+    // The back end: on the master, or on every rank for a distributed DEM
+    // (demBackend::onAllRanks: every call below then made on every rank;
+    // the master's results are broadcast as for the others)
+    if (Pstream::master() || demBackend::onAllRanks(dict_))
     {
         backend_ = demBackend::New(mesh_.time(), dict_);
         nSubSteps_ = backend_->stepsPerFluidStep();
@@ -136,7 +139,7 @@ Foam::demCloud::~demCloud()
 void Foam::demCloud::updateParticles()
 {
     // 1. Copy from the back end, broadcast
-    if (Pstream::master())
+    if (backend_.valid())
     {
         backend_->particles(particles_);
     }
@@ -312,7 +315,7 @@ void Foam::demCloud::computeForces
     );
 
     // Hand the forces to the back end (engine order) for the next advance
-    if (Pstream::master())
+    if (backend_.valid())
     {
         backend_->setForces(force_, List<vector>());
     }
@@ -362,7 +365,7 @@ void Foam::demCloud::evolve
 )
 {
     const scalar t0 = io_.elapsedTime();
-    if (Pstream::master())
+    if (backend_.valid())
     {
         backend_->evolve();
     }
@@ -395,7 +398,7 @@ void Foam::demCloud::write()
 {
     // The back end writes its state and the forces it holds for the next
     // advance (<time>/polyDEM/fluidForces, handed over again by start())
-    if (Pstream::master())
+    if (backend_.valid())
     {
         backend_->write();
     }
@@ -420,7 +423,7 @@ void Foam::demCloud::start
     computeForces(nu, nuEff, alphaPhi);
     // The first handover: at a restart the back end replaces the forces by
     // those written with its state
-    if (Pstream::master())
+    if (backend_.valid())
     {
         List<vector> torque;
         backend_->start(force_, torque);

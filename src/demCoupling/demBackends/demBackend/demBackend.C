@@ -104,6 +104,22 @@ Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
 }
 
 
+Foam::wordHashSet& Foam::demBackend::onAllRanksTable()
+{
+    static wordHashSet table;
+    return table;
+}
+
+
+bool Foam::demBackend::onAllRanks(const dictionary& dict)
+{
+    return onAllRanksTable().found
+    (
+        dict.getOrDefault<word>("demBackend", "polyDEM")
+    );
+}
+
+
 Foam::fileName Foam::demBackend::casePath() const
 {
     return runTime_.globalPath();

@@ -109,9 +109,11 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh)
     }
 
     // The DEM runs once, on the master, writing to the case folder; the
-    // other ranks get the bodies (scatterBodies)
+    // other ranks get the bodies (scatterBodies). A distributed back end
+    // (demBackend::onAllRanks) runs on every rank, every call to it made on
+    // every rank; the master's bodies are scattered.
     const dictionary selection(backendSelection());
-    if (Pstream::master())
+    if (Pstream::master() || demBackend::onAllRanks(selection))
     {
         backend_ = demBackend::New(mesh.time(), selection);
         g_ = backend_->gravity();
@@ -193,7 +195,7 @@ void Foam::ibParticles::evolve
         previousVelocity_[i] = b.velocity;
     }
 
-    if (Pstream::master())
+    if (backend_.valid())
     {
         // The first handover goes through start() (the back end's restart
         // order), the later ones through setForces()
@@ -215,7 +217,7 @@ void Foam::ibParticles::evolve
     {
         oldU.set(bodies_[i].id, previousVelocity_[i]);
     }
-    if (Pstream::master())
+    if (backend_.valid())
     {
         readBodies();
     }
@@ -265,7 +267,7 @@ void Foam::ibParticles::writeForces
 
 void Foam::ibParticles::write()
 {
-    if (Pstream::master())
+    if (backend_.valid())
     {
         backend_->write();
     }
