@@ -66,6 +66,7 @@ Description
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
 #include "demCloud.H"
+#include "surfaceTensionModel.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -173,6 +174,8 @@ int main(int argc, char *argv[])
             #include "alphaEqnSubCycle.H"
 
             mixture.correct();
+
+            #include "couplingLevelDensity.H"
 
             if (pimple.frozenFlow())
             {

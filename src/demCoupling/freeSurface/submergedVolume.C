@@ -1,5 +1,6 @@
 #include "submergedVolume.H"
 #include "mathematicalConstants.H"
+#include "Pair.H"
 
 // * * * * * * * * * * * * * * * Local helpers * * * * * * * * * * * * * * * //
 
@@ -415,3 +416,178 @@ void Foam::submergedVolume::fractions
 
 
 // ************************************************************************* //
+
+
+void Foam::submergedVolume::levelFraction
+(
+    const demParticleArrays& particles,
+    const List<scalar>& volume,
+    const List<demShape>& shapes,
+    const demCouplingWeights& weights,
+    const volScalarField& voidfraction,
+    const volScalarField& alpha1,
+    const vector& g,
+    scalarField& h
+)
+{
+    const vector up = -g/max(mag(g), VSMALL);
+    updateCellHeights(up);
+
+    const scalarField& eps = voidfraction.primitiveField();
+    const scalarField& a1 = alpha1.primitiveField();
+    const scalarField& V = mesh_.V();
+    h = a1;
+
+    // Each particle's extent along up
+    const label n = particles.size();
+    List<scalar> lo(n), hi(n);
+    forAll(lo, i)
+    {
+        const scalar zc = up & particles.position[i];
+        const label t = particles.type[i];
+        if (t < shapes.size() && shapes[t].polyhedron())
+        {
+            scalar l = GREAT, u = -GREAT;
+            for (const point& v : shapes[t].vertices)
+            {
+                const scalar z = up & (particles.orientation[i] & v);
+                l = min(l, z);
+                u = max(u, z);
+            }
+            lo[i] = zc + l;
+            hi[i] = zc + u;
+        }
+        else
+        {
+            lo[i] = zc - particles.radius[i];
+            hi[i] = zc + particles.radius[i];
+        }
+    }
+
+    // The pieces (volume, lowest, highest point) in the cells of interest
+    struct piece { scalar s, a, b; };
+    Map<DynamicList<piece>> pieces;
+    const List<label>& wStart = weights.start();
+    const List<label>& wCell = weights.cellIndex();
+    const List<scalar>& wWeight = weights.weight();
+    for (label i = 0; i + 1 < wStart.size() && i < n; ++i)
+    {
+        for (label k = wStart[i]; k < wStart[i + 1]; ++k)
+        {
+            const label c = wCell[k];
+            if (c < 0 || eps[c] >= 1)
+            {
+                continue;
+            }
+            const scalar a = max(zb_[c], lo[i]);
+            const scalar b = min(zt_[c], hi[i]);
+            pieces(c).append(piece{wWeight[k]*volume[i], a, min(max(a, b), zt_[c])});
+        }
+    }
+
+    // Cells where the solid fills the whole cross-section over a height
+    // range that holds the level: the cell's water does not fix it (any
+    // level in [lo, hi] fits); they take their layer neighbours' level
+    Map<Pair<scalar>> undetermined;
+
+    forAllConstIters(pieces, it)
+    {
+        const label c = it.key();
+        const DynamicList<piece>& P = it.val();
+        const scalar zb = zb_[c];
+        const scalar dz = max(zt_[c] - zb, VSMALL);
+        scalar S1 = 0;
+        for (const piece& q : P)
+        {
+            S1 += q.s;
+        }
+        if (S1 <= 0)
+        {
+            continue;
+        }
+        const scalar k = min(scalar(1), (1 - eps[c])*V[c]/S1);
+        const scalar water = eps[c]*a1[c]*V[c];
+        // Water within 1e-6 of the cell's fluid is MULES's noise about 0
+        // or 1 (a film of 1e-9 on a block's top would put the level there)
+        const scalar tol = 1e-6*eps[c]*V[c];
+
+        // Fluid volume below the height zb + x dz, x in [0, 1]
+        auto fluidBelow = [&](scalar x)
+        {
+            const scalar z = zb + x*dz;
+            scalar solid = 0;
+            for (const piece& q : P)
+            {
+                if (z >= q.b)
+                {
+                    solid += q.s;
+                }
+                else if (z > q.a)
+                {
+                    solid += q.s*(z - q.a)/(q.b - q.a);
+                }
+            }
+            return V[c]*x - k*solid;
+        };
+
+        // Lowest x with fluidBelow(x) >= water and highest with <= water
+        // (fluidBelow(0) <= 0 <= water <= eps V = fluidBelow(1))
+        scalar l0 = 0, l1 = 1, u0 = 0, u1 = 1;
+        for (int iter = 0; iter < 60; ++iter)
+        {
+            const scalar lm = 0.5*(l0 + l1);
+            (fluidBelow(lm) < water - tol ? l0 : l1) = lm;
+            const scalar um = 0.5*(u0 + u1);
+            (fluidBelow(um) <= water + tol ? u0 : u1) = um;
+        }
+        const scalar lo = 0.5*(l0 + l1), hi = max(lo, 0.5*(u0 + u1));
+        h[c] = 0.5*(lo + hi);
+        if (hi - lo > 1e-9)
+        {
+            undetermined.set(c, Pair<scalar>(lo, hi));
+        }
+    }
+
+    // Undetermined cells: the mean level of the determined face neighbours
+    // in the same layer (same lowest and highest point), kept within the
+    // cell's range; passes until none is left (inward from the edges of a
+    // block that fills several cells), the middle of the range otherwise
+    const labelListList& cc = mesh_.cellCells();
+    for (int pass = 0; pass < 100 && undetermined.size(); ++pass)
+    {
+        Map<scalar> next;
+        forAllConstIters(undetermined, it)
+        {
+            const label c = it.key();
+            const scalar dz = max(zt_[c] - zb_[c], VSMALL);
+            scalar sum = 0;
+            label nSum = 0;
+            for (const label nb : cc[c])
+            {
+                if
+                (
+                    !undetermined.found(nb)
+                 && mag(zb_[nb] - zb_[c]) < 1e-9*dz
+                 && mag(zt_[nb] - zt_[c]) < 1e-9*dz
+                )
+                {
+                    sum += h[nb];
+                    ++nSum;
+                }
+            }
+            if (nSum)
+            {
+                next.set(c, min(max(sum/nSum, it.val().first()), it.val().second()));
+            }
+        }
+        if (next.empty())
+        {
+            break;
+        }
+        forAllConstIters(next, it)
+        {
+            h[it.key()] = it.val();
+            undetermined.erase(it.key());
+        }
+    }
+}
