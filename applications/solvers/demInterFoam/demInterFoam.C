@@ -66,7 +66,6 @@ Description
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
 #include "demCloud.H"
-#include "surfaceTensionModel.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -174,8 +173,6 @@ int main(int argc, char *argv[])
             #include "alphaEqnSubCycle.H"
 
             mixture.correct();
-
-            #include "couplingLevelDensity.H"
 
             if (pimple.frozenFlow())
             {

@@ -391,26 +391,6 @@ void Foam::demCloud::evolve
 }
 
 
-void Foam::demCloud::levelFraction
-(
-    const volScalarField& alpha1,
-    scalarField& h
-)
-{
-    if (!freeSurface_)
-    {
-        FatalErrorInFunction
-            << "levelFraction needs a free surface (demInterFoam)"
-            << exit(FatalError);
-    }
-    submerged_->levelFraction
-    (
-        particles_, volume_, shapes_, weights_,
-        exchange_.voidfraction(), alpha1, freeSurface_().g, h
-    );
-}
-
-
 void Foam::demCloud::write()
 {
     // The back end writes its state and the forces it holds for the next

@@ -45,7 +45,7 @@ void Foam::freeSurfacePressureForce::cacheFields(const bool store)
     (
         fvc::reconstruct
         (
-            (fvc::snGrad(fs->p_rgh) + fs->ghf*fvc::snGrad(fs->rhoLevel))
+            (fvc::snGrad(fs->p_rgh) + fs->ghf*fvc::snGrad(fs->rho))
            *context_.mesh().magSf()
         )
     );
