@@ -38,7 +38,13 @@ def water_field(case, lo, hi, n, level, boxes=()):
                     solidBelow += a * overlap1(z0, z1, bl[2], min(bh[2], level))
                 fluid = V - solid
                 w = below - solidBelow
-                vals.append(min(max(w / fluid, 0.0), 1.0) if fluid > 1e-14 * V else 0.0)
+                # A cell a block fills holds no fluid, but the solver keeps
+                # eps = alphaMin of fictitious fluid there: it gets the water
+                # fraction of the undisturbed level (below/V), so that rho
+                # stays layered; alpha 0 there would be a bubble in the
+                # water, pushed up by buoyancy (gh grad rho has no balancing
+                # p_rgh) and pushing the block with it
+                vals.append(min(max(w / fluid, 0.0), 1.0) if fluid > 1e-14 * V else below / V)
     body = ("dimensions [0 0 0 0 0 0 0];\ninternalField nonuniform List<scalar>\n"
             f"{len(vals)}\n(\n" + "\n".join(f"{v:.17g}" for v in vals) + "\n);\n"
             "boundaryField\n{\n    walls { type zeroGradient; }\n"

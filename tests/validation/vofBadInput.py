@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Bad input to demInterFoam is refused with a message that names the file,
+the entry and what was expected (FatalIOError / FatalError, non-zero exit,
+no crash, no hang):
+
+  1. couplingMode misspelled (resolvd)    -> couplingProperties, the valid modes
+  2. submergedVolume misspelled (planar)  -> couplingProperties, the valid names
+  3. formulation setII with a free surface -> couplingProperties, use setI
+  4. nAlphaSubCycles 2 with particles      -> fvSolution, nAlphaSubCycles 1
+  5. 0/alpha.water missing                 -> OpenFOAM's error naming the file
+Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
+block; each run must fail and its log hold the strings listed. ~10 s.
+"""
+import os
+import hedracase as hc
+import vofcase as vc
+
+LO, HI, N = (0.0, 0.0, 0.0), (0.04, 0.04, 0.04), (4, 4, 4)
+LEVEL = 0.02
+BASE = """couplingMode unresolved;
+formulation setI;
+momentumCoupling implicit;
+locateModel hinted;
+voidFractionModel exactOverlap;
+smoothingModel none;
+submergedVolume interfacePlane;
+forceModels (Gidaspow freeSurfacePressure);
+"""
+
+
+def make(name, coupling):
+    case = hc.workdir(f"vofBad-{name}")
+    vc.closed_tank(case, LO, HI, N, open_top=True)
+    H = 0.01
+    box = ((0.015, 0.015, LEVEL - H / 2), (0.025, 0.025, LEVEL + H / 2))
+    vc.water_field(case, LO, HI, N, LEVEL, [box])
+    vc.vof_dicts(case, 0.004, 2e-3, 0.004)
+    vc.dem_blocks(case, 1e-4, 500, [(0.02, 0.02, LEVEL)], (H, H, H), (LO, HI))
+    hc.coupling(case, coupling)
+    return case
+
+
+tests = [
+    ("couplingMode", BASE.replace("couplingMode unresolved;", "couplingMode resolvd;"),
+     None, ["couplingMode 'resolvd'", "couplingProperties", "Valid couplingMode values",
+            "unresolved"]),
+    ("submergedVolume", BASE.replace("interfacePlane;", "planar;"),
+     None, ["Unknown submergedVolume 'planar'", "couplingProperties",
+            "cellWeights interfacePlane auto"]),
+    ("formulation", BASE.replace("setI;", "setII;"),
+     None, ["formulation setII", "couplingProperties", "use setI"]),
+    ("nAlphaSubCycles", BASE, "subCycles",
+     ["nAlphaSubCycles 2", "fvSolution", "use nAlphaSubCycles 1"]),
+    ("alphaMissing", BASE, "noAlpha",
+     ["alpha.water", "cannot find file"]),
+]
+
+results = []
+for name, coupling, change, expect in tests:
+    case = make(name, coupling)
+    if change == "subCycles":
+        p = os.path.join(case, "system/fvSolution")
+        txt = open(p).read().replace("nAlphaSubCycles 1;", "nAlphaSubCycles 2;")
+        open(p, "w").write(txt)
+    elif change == "noAlpha":
+        os.remove(os.path.join(case, "0/alpha.water"))
+    hc.run("blockMesh", case, "log.blockMesh")
+    rc = hc.run("demInterFoam", case, "log.demInterFoam", check=False, timeout=120)
+    log = open(os.path.join(case, "log.demInterFoam")).read()
+    missing = [s for s in expect if s not in log]
+    ok = rc != 0 and not missing and "FOAM FATAL" in log
+    results.append(ok)
+    print(f"{'PASS' if ok else 'FAIL'}: {name}: exit {rc}"
+          + (f", missing in the message: {missing}" if missing else ""))
+    if not ok or os.environ.get("HEDRA_SHOW"):
+        i = log.find("FOAM FATAL")
+        print(log[i:i + 1200] if i >= 0 else log[-1500:])
+hc.finish(results)
