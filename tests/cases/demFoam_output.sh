@@ -10,7 +10,11 @@
 #   with the velocity, omega and force of the state file at that time, and
 #   volumeEquivalentDiameter = (6 V/pi)^(1/3) (cubes of edge 3 mm: 3.7221 mm;
 #   rocks made with equivalentDiameter 4 mm: 4 mm) in both files
+# With the argument removedWall the plate is removed at 0.015 s
+# (activeUntil): fixedWalls.vtp is written again at 0.02 (the floor only),
+# walls.pvd names it from 0.02 on, and the restart at 0.03 keeps it.
 . "$(dirname "$0")/common.sh"
+variant="${1:-plain}"
 
 copyCase settlingRocks
 props=constant/demProperties
@@ -53,6 +57,7 @@ endfacet
 endsolid plate
 STL
 setEntry $props walls/plate "{ type mesh; file \"plate.stl\"; material steel; }"
+[ "$variant" = removedWall ] && setEntry $props walls/plate/activeUntil 0.015
 setEntry $props walls/lid "{ type plane; point (0.02 0.02 0.1); normal (0 0 -1); material steel; displaySize 0.06; motion { type translation; velocity (0 0 -0.1); } }"
 
 demFoam > log.demFoam.1 2>&1 || { tail -30 log.demFoam.1; fail "demFoam (to 0.03) failed"; }
@@ -60,8 +65,8 @@ setEntry system/controlDict endTime 0.05
 demFoam > log.demFoam.2 2>&1 || { tail -30 log.demFoam.2; fail "demFoam (restart to 0.05) failed"; }
 grep -q "restarting from" log.demFoam.2 || fail "the second run did not restart"
 
-python3 - <<'PYEOF' || fail "output checks failed"
-import glob, math, re, sys
+VARIANT="$variant" python3 - <<'PYEOF' || fail "output checks failed"
+import glob, math, os, re, sys
 import xml.etree.ElementTree as ET
 ok = True
 def check(what, cond):
@@ -70,8 +75,16 @@ def check(what, cond):
     ok = ok and cond
 
 times = ["0", "0.01", "0.02", "0.03", "0.04", "0.05"]
+removed = os.environ["VARIANT"] == "removedWall"
+# the fixed walls' file at each time, and its triangles (floor 2, plate 4)
+if removed:
+    want = {"0/polyDEM/fixedWalls.vtp": 6, "0.02/polyDEM/fixedWalls.vtp": 2}
+    fixedAt = {t: "0/polyDEM/fixedWalls.vtp" if float(t) < 0.015 else "0.02/polyDEM/fixedWalls.vtp" for t in times}
+else:
+    want = {"0/polyDEM/fixedWalls.vtp": 6}
+    fixedAt = {t: "0/polyDEM/fixedWalls.vtp" for t in times}
 fixed = sorted(glob.glob("*/polyDEM/fixedWalls.vtp"))
-check(f"one fixedWalls.vtp in all time folders: {fixed}", fixed == ["0/polyDEM/fixedWalls.vtp"])
+check(f"fixedWalls.vtp in the time folders: {fixed}", fixed == sorted(want))
 
 def piece(path):
     root = ET.parse(path).getroot()
@@ -80,10 +93,13 @@ def arrays(node):
     return {a.get("Name"): (int(a.get("NumberOfComponents", "1")), [float(x) for x in a.text.split()])
             for a in node.findall("DataArray")}
 
-p = piece("0/polyDEM/fixedWalls.vtp")
-walls = arrays(p.find("CellData"))["wall"][1]
-check(f"fixedWalls.vtp: floor (2) and plate (4) triangles, got {p.get('NumberOfPolys')}",
-      int(p.get("NumberOfPolys")) == 6 and len(walls) == 6)
+for f, nTri in want.items():
+    if f not in fixed:
+        continue
+    p = piece(f)
+    walls = arrays(p.find("CellData"))["wall"][1]
+    check(f"{f}: {nTri} triangles (floor 2, plate 4), got {p.get('NumberOfPolys')}",
+          int(p.get("NumberOfPolys")) == nTri and len(walls) == nTri)
 
 pvd = ET.parse("walls.pvd").getroot().findall("Collection/DataSet")
 entries = {}
@@ -92,7 +108,7 @@ for d in pvd:
 for t in times:
     e = sorted(entries.get(float(t), []))
     check(f"walls.pvd at t = {t}: {e}",
-          e == [(0, "0/polyDEM/fixedWalls.vtp"), (1, f"{t}/polyDEM/walls.vtp")])
+          e == [(0, fixedAt[t]), (1, f"{t}/polyDEM/walls.vtp")])
     lid = piece(f"{t}/polyDEM/walls.vtp")
     z = arrays(lid.find("Points"))["points"][1][2::3]
     zLid = 0.1 - 0.1*float(t)
