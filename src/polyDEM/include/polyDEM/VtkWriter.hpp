@@ -4,9 +4,10 @@
 // Files are ASCII with shortest round-trip double formatting (full
 // precision). Particles are written as points with vertex cells and point
 // data, so ParaView's Glyph filter can draw spheres scaled by "diameter"
-// (Scale Array = diameter, Scale Factor = 1) and oriented by "orientation".
-// Surfaces are generic polygons: wall triangles now, polyhedral particle
-// shapes later.
+// (the bounding diameter; Scale Factor = 1) or, where given, by
+// "volumeEquivalentDiameter" (spheres of the particle's volume), oriented by
+// "orientation". Surfaces are generic polygons: wall triangles, and
+// polyhedral particles' faces with their particle's fields.
 #pragma once
 
 #include "polyDEM/ParticleState.hpp"
