@@ -229,10 +229,38 @@ void Foam::demSimulation::insertDue()
 }
 
 
+bool Foam::demSimulation::wallMoves(size_t k) const
+{
+    const auto& w = input_.walls()[k];
+    const auto& config = input_.config();
+    const polydem::WallMotion& m =
+        w.isPlane ? config.planes[w.index].motion : config.meshes[w.index].motion;
+    return m.kind != polydem::MotionKind::fixed;
+}
+
+
+std::vector<double> Foam::demSimulation::volumeEquivalentDiameters
+(
+    const polydem::ParticleState& p
+) const
+{
+    const auto& config = input_.config();
+    std::vector<double> d(p.size());
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const auto& type = config.types[p.type[i]];
+        const double V = p.mass[i]/config.materials[type.material].density;
+        d[i] = std::cbrt(6*V/constant::mathematical::pi);
+    }
+    return d;
+}
+
+
 polydem::TriangleMesh Foam::demSimulation::wallSurface
 (
     scalar t,
-    std::vector<int>& ids
+    std::vector<int>& ids,
+    bool moving
 ) const
 {
     polydem::TriangleMesh surface;
@@ -257,7 +285,7 @@ polydem::TriangleMesh Foam::demSimulation::wallSurface
 
     for (size_t k = 0; k < walls.size(); ++k)
     {
-        if (!wallActive_[k])
+        if (!wallActive_[k] || wallMoves(k) != moving)
         {
             continue;
         }
@@ -317,7 +345,7 @@ void Foam::demSimulation::writePolyhedra
     const auto& config = input_.config();
     std::vector<polydem::Vec3> points;
     std::vector<std::vector<int>> polygons;
-    std::vector<int> ids;
+    std::vector<size_t> owner;
     for (size_t i = 0; i < p.size(); ++i)
     {
         const auto& type = config.types[p.type[i]];
@@ -339,10 +367,13 @@ void Foam::demSimulation::writePolyhedra
                 poly.push_back(base + s.faceVertex[k]);
             }
             polygons.push_back(std::move(poly));
-            ids.push_back(int(p.id[i]));
+            owner.push_back(i);
         }
     }
-    polydem::writeSurfaceVtp(path, points, polygons, ids, "particleId");
+    polydem::writeParticleFacesVtp
+    (
+        path, points, polygons, owner, p, volumeEquivalentDiameters(p)
+    );
 }
 
 
@@ -362,7 +393,12 @@ void Foam::demSimulation::writeState()
         const fileName rel(runTime_.timeName()/"polyDEM");
         // The time as the folder shows it (no round-off digits)
         const scalar t = readScalar(runTime_.timeName());
-        polydem::writeParticlesVtp(dir/"particles.vtp", state.particles);
+        polydem::writeParticlesVtp
+        (
+            dir/"particles.vtp",
+            state.particles,
+            volumeEquivalentDiameters(state.particles)
+        );
         particlesPvd_.add(t, rel/"particles.vtp");
         particlesPvd_.write(casePath()/"particles.pvd");
 
@@ -373,16 +409,110 @@ void Foam::demSimulation::writeState()
             polyhedraPvd_.write(casePath()/"polyhedra.pvd");
         }
 
-        std::vector<int> ids;
-        const polydem::TriangleMesh walls = wallSurface(state.time, ids);
-        if (walls.size())
+        // Fixed walls (a large STL does not change) once, as part 0 of
+        // walls.pvd at every time; moving walls at each write, part 1
+        std::vector<bool> fixedNow(wallActive_.size(), false);
+        bool anyFixed = false;
+        for (size_t k = 0; k < wallActive_.size(); ++k)
         {
-            polydem::writeSurfaceVtp(dir/"walls.vtp", walls, ids, "wall");
-            wallsPvd_.add(t, rel/"walls.vtp");
+            fixedNow[k] = wallActive_[k] && !wallMoves(k);
+            anyFixed = anyFixed || fixedNow[k];
+        }
+        bool indexChanged = false;
+        if (anyFixed)
+        {
+            if
+            (
+                fixedWallsFile_.empty()
+             || fixedNow != fixedWallsWritten_
+             || !isFile(casePath()/fixedWallsFile_)
+            )
+            {
+                std::vector<int> ids;
+                const polydem::TriangleMesh fixed =
+                    wallSurface(state.time, ids, false);
+                polydem::writeSurfaceVtp
+                (
+                    dir/"fixedWalls.vtp", fixed, ids, "wall"
+                );
+                const std::string previous = fixedWallsFile_;
+                fixedWallsFile_ = rel/"fixedWalls.vtp";
+                if (fixedNow == fixedWallsWritten_ && !previous.empty())
+                {
+                    // The same walls, their file gone (purgeWrite): the
+                    // earlier times name the new one
+                    const auto entries = wallsPvd_.entries();
+                    wallsPvd_.clear();
+                    for (const auto& e : entries)
+                    {
+                        wallsPvd_.add
+                        (
+                            e.time,
+                            e.file == previous
+                          ? static_cast<const std::string&>(fixedWallsFile_)
+                          : e.file,
+                            e.part
+                        );
+                    }
+                }
+                fixedWallsWritten_ = fixedNow;
+            }
+            wallsPvd_.add(t, fixedWallsFile_, 0);
+            indexChanged = true;
+        }
+        std::vector<int> ids;
+        const polydem::TriangleMesh moving = wallSurface(state.time, ids, true);
+        if (moving.size())
+        {
+            polydem::writeSurfaceVtp(dir/"walls.vtp", moving, ids, "wall");
+            wallsPvd_.add(t, rel/"walls.vtp", 1);
+            indexChanged = true;
+        }
+        if (indexChanged)
+        {
             wallsPvd_.write(casePath()/"walls.pvd");
         }
     }
     Info<< "DEM t = " << state.time << " s: wrote " << dir << endl;
+}
+
+
+void Foam::demSimulation::restartWallsIndex()
+{
+    // The restart time's entries of walls.pvd (dropped by read) again, if
+    // their files are there: its fixedWalls.vtp may be in an earlier folder
+    polydem::PvdCollection previous;
+    previous.read(casePath()/"walls.pvd");
+    bool found = false;
+    for (const auto& e : previous.entries())
+    {
+        if
+        (
+            mag(e.time - runTime_.value()) > 1e-6*runTime_.deltaTValue()
+         || !isFile(casePath()/e.file)
+        )
+        {
+            continue;
+        }
+        wallsPvd_.add(e.time, e.file, e.part);
+        found = true;
+        if (e.part == 0 && fileName(e.file).name() == "fixedWalls.vtp")
+        {
+            // Still the fixed walls of this time: written again only when
+            // one is removed
+            fixedWallsFile_ = e.file;
+            fixedWallsWritten_.assign(wallActive_.size(), false);
+            for (size_t k = 0; k < wallActive_.size(); ++k)
+            {
+                fixedWallsWritten_[k] = wallActive_[k] && !wallMoves(k);
+            }
+        }
+    }
+    const fileName rel(runTime_.timeName()/"polyDEM");
+    if (!found && isFile(timePath()/"polyDEM"/"walls.vtp"))
+    {
+        wallsPvd_.add(runTime_.value(), rel/"walls.vtp");
+    }
 }
 
 
@@ -604,10 +734,7 @@ Foam::demSimulation::demSimulation
         {
             particlesPvd_.add(runTime_.value(), rel/"particles.vtp");
         }
-        if (isFile(timePath()/"polyDEM"/"walls.vtp"))
-        {
-            wallsPvd_.add(runTime_.value(), rel/"walls.vtp");
-        }
+        restartWallsIndex();
         if (isFile(timePath()/"polyDEM"/"polyhedra.vtp"))
         {
             polyhedraPvd_.add(runTime_.value(), rel/"polyhedra.vtp");

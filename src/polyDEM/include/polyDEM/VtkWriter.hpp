@@ -4,9 +4,10 @@
 // Files are ASCII with shortest round-trip double formatting (full
 // precision). Particles are written as points with vertex cells and point
 // data, so ParaView's Glyph filter can draw spheres scaled by "diameter"
-// (Scale Array = diameter, Scale Factor = 1) and oriented by "orientation".
-// Surfaces are generic polygons: wall triangles now, polyhedral particle
-// shapes later.
+// (the bounding diameter; Scale Factor = 1) or, where given, by
+// "volumeEquivalentDiameter" (spheres of the particle's volume), oriented by
+// "orientation". Surfaces are generic polygons: wall triangles, and
+// polyhedral particles' faces with their particle's fields.
 #pragma once
 
 #include "polyDEM/ParticleState.hpp"
@@ -25,7 +26,15 @@ namespace polydem
 //  Float64), orientation (4 x Float64, quaternion w x y z).
 //  Arrays of ParticleState that are empty are skipped (e.g. no torque kept);
 //  any other size mismatch throws polydem::Error.
-void writeParticlesVtp(const std::string& path, const ParticleState& state);
+//  volumeEquivalentDiameter, when not empty, is one value per particle,
+//  (6 V/pi)^(1/3), written under that name: the glyph scale that shows a
+//  polyhedron's volume ("diameter" is twice the bounding radius).
+void writeParticlesVtp
+(
+    const std::string& path,
+    const ParticleState& state,
+    const std::vector<double>& volumeEquivalentDiameter = {}
+);
 
 //- Polygon surface. polygonIds, when not empty, is one int per polygon
 //  written as cell data named idName (wall patch id, particle id, ...).
@@ -36,6 +45,19 @@ void writeSurfaceVtp
     const std::vector<std::vector<int>>& polygons,
     const std::vector<int>& polygonIds = {},
     const std::string& idName = "id"
+);
+
+//- Particle faces (polyhedra.vtp): polygons over points, face p belonging to
+//  the particle of index polygonParticle[p] in state. Cell data: the point
+//  data of writeParticlesVtp for that particle, and particleId (= id).
+void writeParticleFacesVtp
+(
+    const std::string& path,
+    const std::vector<Vec3>& points,
+    const std::vector<std::vector<int>>& polygons,
+    const std::vector<std::size_t>& polygonParticle,
+    const ParticleState& state,
+    const std::vector<double>& volumeEquivalentDiameter = {}
 );
 
 //- Convenience: a triangle surface (walls)

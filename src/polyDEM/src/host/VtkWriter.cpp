@@ -197,10 +197,90 @@ bool present(const std::vector<T>& v, std::size_t n, const char* name, const std
     return true;
 }
 
+// The particle fields of particles.vtp, one tuple per row; row k shows
+// particle rows[k] (identity for particles.vtp, the owning particle of each
+// face for polyhedra.vtp)
+template<class T>
+std::vector<T> gather(const std::vector<T>& v, const std::vector<std::size_t>& rows)
+{
+    std::vector<T> r;
+    r.reserve(rows.size());
+    for (std::size_t i : rows)
+    {
+        r.push_back(v[i]);
+    }
+    return r;
+}
+
+void particleFields
+(
+    std::string& out,
+    const ParticleState& s,
+    const std::vector<std::size_t>& rows,
+    const std::vector<double>& volumeEquivalentDiameter,
+    const std::string& path
+)
+{
+    const std::size_t n = s.position.size();
+    present(s.id, n, "id", path);
+    intArray(out, "Int64", "id", gather(s.id, rows));
+    if (present(s.type, n, "type", path))
+    {
+        intArray(out, "Int32", "type", gather(s.type, rows));
+    }
+    if (present(s.radius, n, "radius", path))
+    {
+        const std::vector<double> r = gather(s.radius, rows);
+        doubleArray(out, "radius", r);
+        std::vector<double> d(r.size());
+        std::transform(r.begin(), r.end(), d.begin(), [](double a) { return 2 * a; });
+        doubleArray(out, "diameter", d);
+    }
+    if (present(volumeEquivalentDiameter, n, "volumeEquivalentDiameter", path))
+    {
+        doubleArray(out, "volumeEquivalentDiameter", gather(volumeEquivalentDiameter, rows));
+    }
+    if (present(s.mass, n, "mass", path))
+    {
+        doubleArray(out, "mass", gather(s.mass, rows));
+    }
+    if (present(s.velocity, n, "velocity", path))
+    {
+        vec3Array(out, "velocity", gather(s.velocity, rows));
+    }
+    if (present(s.omega, n, "omega", path))
+    {
+        vec3Array(out, "omega", gather(s.omega, rows));
+    }
+    if (present(s.force, n, "force", path))
+    {
+        vec3Array(out, "force", gather(s.force, rows));
+    }
+    if (present(s.torque, n, "torque", path))
+    {
+        vec3Array(out, "torque", gather(s.torque, rows));
+    }
+    if (present(s.orientation, n, "orientation", path))
+    {
+        beginArray(out, "Float64", "orientation", 4);
+        writeValues(out, gather(s.orientation, rows), 2, [&](const Quaternion& q)
+        {
+            put(out, q.w); out += ' '; put(out, q.x); out += ' ';
+            put(out, q.y); out += ' '; put(out, q.z);
+        });
+        endArray(out);
+    }
+}
+
 } // namespace
 
 
-void writeParticlesVtp(const std::string& path, const ParticleState& s)
+void writeParticlesVtp
+(
+    const std::string& path,
+    const ParticleState& s,
+    const std::vector<double>& volumeEquivalentDiameter
+)
 {
     const std::size_t n = s.position.size();
     present(s.id, n, "id", path);
@@ -213,49 +293,12 @@ void writeParticlesVtp(const std::string& path, const ParticleState& s)
          + "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n";
 
     out += "      <PointData Scalars=\"diameter\" Vectors=\"velocity\">\n";
-    intArray(out, "Int64", "id", s.id);
-    if (present(s.type, n, "type", path))
+    std::vector<std::size_t> rows(n);
+    for (std::size_t i = 0; i < n; ++i)
     {
-        intArray(out, "Int32", "type", s.type);
+        rows[i] = i;
     }
-    if (present(s.radius, n, "radius", path))
-    {
-        doubleArray(out, "radius", s.radius);
-        std::vector<double> d(n);
-        std::transform(s.radius.begin(), s.radius.end(), d.begin(),
-                       [](double r) { return 2 * r; });
-        doubleArray(out, "diameter", d);
-    }
-    if (present(s.mass, n, "mass", path))
-    {
-        doubleArray(out, "mass", s.mass);
-    }
-    if (present(s.velocity, n, "velocity", path))
-    {
-        vec3Array(out, "velocity", s.velocity);
-    }
-    if (present(s.omega, n, "omega", path))
-    {
-        vec3Array(out, "omega", s.omega);
-    }
-    if (present(s.force, n, "force", path))
-    {
-        vec3Array(out, "force", s.force);
-    }
-    if (present(s.torque, n, "torque", path))
-    {
-        vec3Array(out, "torque", s.torque);
-    }
-    if (present(s.orientation, n, "orientation", path))
-    {
-        beginArray(out, "Float64", "orientation", 4);
-        writeValues(out, s.orientation, 2, [&](const Quaternion& q)
-        {
-            put(out, q.w); out += ' '; put(out, q.x); out += ' ';
-            put(out, q.y); out += ' '; put(out, q.z);
-        });
-        endArray(out);
-    }
+    particleFields(out, s, rows, volumeEquivalentDiameter, path);
     out += "      </PointData>\n";
 
     out += "      <Points>\n";
@@ -283,21 +326,18 @@ void writeParticlesVtp(const std::string& path, const ParticleState& s)
 }
 
 
-void writeSurfaceVtp
+namespace
+{
+
+// Polygons over points with the cell data section cellData (may be empty)
+void writePolygonsVtp
 (
     const std::string& path,
     const std::vector<Vec3>& points,
     const std::vector<std::vector<int>>& polygons,
-    const std::vector<int>& polygonIds,
-    const std::string& idName
+    const std::string& cellData
 )
 {
-    if (!polygonIds.empty() && polygonIds.size() != polygons.size())
-    {
-        throw Error("polygon ids: " + std::to_string(polygonIds.size()) + " values for "
-                        + std::to_string(polygons.size()) + " polygons",
-                    path, idName);
-    }
     std::vector<long long> conn, offsets;
     offsets.reserve(polygons.size());
     for (std::size_t p = 0; p < polygons.size(); ++p)
@@ -325,12 +365,7 @@ void writeSurfaceVtp
     out += "    <Piece NumberOfPoints=\"" + std::to_string(points.size())
          + "\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\""
          + std::to_string(polygons.size()) + "\">\n";
-    if (!polygonIds.empty())
-    {
-        out += "      <CellData Scalars=\"" + xmlEscape(idName) + "\">\n";
-        intArray(out, "Int32", idName, polygonIds);
-        out += "      </CellData>\n";
-    }
+    out += cellData;
     out += "      <Points>\n";
     vec3Array(out, "points", points);
     out += "      </Points>\n";
@@ -341,6 +376,71 @@ void writeSurfaceVtp
     out += vtpFooter;
 
     writeFileAtomically(path, out);
+}
+
+} // namespace
+
+
+void writeSurfaceVtp
+(
+    const std::string& path,
+    const std::vector<Vec3>& points,
+    const std::vector<std::vector<int>>& polygons,
+    const std::vector<int>& polygonIds,
+    const std::string& idName
+)
+{
+    if (!polygonIds.empty() && polygonIds.size() != polygons.size())
+    {
+        throw Error("polygon ids: " + std::to_string(polygonIds.size()) + " values for "
+                        + std::to_string(polygons.size()) + " polygons",
+                    path, idName);
+    }
+    std::string cellData;
+    if (!polygonIds.empty())
+    {
+        cellData += "      <CellData Scalars=\"" + xmlEscape(idName) + "\">\n";
+        intArray(cellData, "Int32", idName, polygonIds);
+        cellData += "      </CellData>\n";
+    }
+    writePolygonsVtp(path, points, polygons, cellData);
+}
+
+
+void writeParticleFacesVtp
+(
+    const std::string& path,
+    const std::vector<Vec3>& points,
+    const std::vector<std::vector<int>>& polygons,
+    const std::vector<std::size_t>& polygonParticle,
+    const ParticleState& state,
+    const std::vector<double>& volumeEquivalentDiameter
+)
+{
+    if (polygonParticle.size() != polygons.size())
+    {
+        throw Error("polygon particles: " + std::to_string(polygonParticle.size())
+                        + " values for " + std::to_string(polygons.size()) + " polygons",
+                    path, "particleId");
+    }
+    for (std::size_t i : polygonParticle)
+    {
+        if (i >= state.position.size())
+        {
+            throw Error("a polygon refers to particle " + std::to_string(i) + " of "
+                            + std::to_string(state.position.size()),
+                        path, "particleId");
+        }
+    }
+    std::string cellData = "      <CellData Scalars=\"particleId\" Vectors=\"velocity\">\n";
+    particleFields(cellData, state, polygonParticle, volumeEquivalentDiameter, path);
+    if (!state.id.empty())
+    {
+        // The name polyhedra.vtp had before it carried every field
+        intArray(cellData, "Int64", "particleId", gather(state.id, polygonParticle));
+    }
+    cellData += "      </CellData>\n";
+    writePolygonsVtp(path, points, polygons, cellData);
 }
 
 

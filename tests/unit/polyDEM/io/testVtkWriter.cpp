@@ -235,6 +235,49 @@ TEST(VtkWriter, surfaceWithIds)
     std::remove(path.c_str());
 }
 
+TEST(VtkWriter, particleFacesCarryTheParticleFields)
+{
+    // A pyramid (5 faces) for particle 2 and a triangle for particle 0: each
+    // face carries its particle's fields, and the volume-equivalent diameter
+    const std::string path = tempPath("faces.vtp");
+    const ParticleState s = threeParticles();
+    const std::vector<Vec3> pts = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}};
+    const std::vector<std::vector<int>> faces = {
+        {0, 3, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 1, 2}};
+    const std::vector<std::size_t> owner = {2, 2, 2, 2, 2, 0};
+    const std::vector<double> dv = {1e-3, 2e-3, 3e-3};
+    writeParticleFacesVtp(path, pts, faces, owner, s, dv);
+    const XmlSummary x = parseXml(slurp(path));
+    ASSERT_TRUE(x.balanced) << x.error;
+    EXPECT_EQ(x.attributes.at("NumberOfPolys"), "6");
+    const std::map<std::string, std::size_t> components = {
+        {"id", 1}, {"particleId", 1}, {"type", 1}, {"radius", 1}, {"diameter", 1},
+        {"volumeEquivalentDiameter", 1}, {"mass", 1}, {"velocity", 3}, {"omega", 3},
+        {"force", 3}, {"torque", 3}, {"orientation", 4}};
+    for (const auto& [name, nc] : components)
+    {
+        ASSERT_TRUE(x.arrays.count(name)) << name;
+        EXPECT_EQ(numbers(x.arrays.at(name)).size(), 6 * nc) << name;
+    }
+    const auto mass = numbers(x.arrays.at("mass"));
+    const auto d = numbers(x.arrays.at("volumeEquivalentDiameter"));
+    const auto q = numbers(x.arrays.at("orientation"));
+    for (std::size_t f = 0; f < 6; ++f)
+    {
+        EXPECT_EQ(mass[f], s.mass[owner[f]]);
+        EXPECT_EQ(d[f], dv[owner[f]]);
+        EXPECT_EQ(q[4 * f + 1], s.orientation[owner[f]].x);
+    }
+    EXPECT_NE(x.arrays.at("particleId").find("1000000000002"), std::string::npos);
+
+    // A face of no particle, an owner list of the wrong length, a diameter
+    // list of the wrong length
+    EXPECT_THROW(writeParticleFacesVtp(path, pts, faces, {2, 2, 2, 2, 2, 3}, s), Error);
+    EXPECT_THROW(writeParticleFacesVtp(path, pts, faces, {2, 2}, s), Error);
+    EXPECT_THROW(writeParticleFacesVtp(path, pts, faces, owner, s, {1e-3}), Error);
+    std::remove(path.c_str());
+}
+
 TEST(PvdCollection, appendAfterRestart)
 {
     const std::string path = tempPath("particles.pvd");
