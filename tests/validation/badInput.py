@@ -7,6 +7,17 @@ that names what is wrong.
   3. missing coefficient         -> names the dictionary and the key
   4. DEM step not dividing the fluid step -> refused (FatalIOError)
   5. demStepsPerFluidStep not matching deltaT/timeStep -> refused
+  6. a misspelled top-level entry (momentumCoupeling) -> refused, with the
+     closest valid name (it would otherwise be ignored and its default used)
+  7. a misspelled coefficient of a selected model (dividedCoeffs nShell) ->
+     refused, with the model's valid coefficients
+  8. a misspelled coefficient dictionary (GidaspowCoefs) -> refused
+  9. out-of-range coefficients: dividedCoeffs alphaMin 2 (void fraction 2
+     everywhere), GidaspowCoeffs alphaMax -1 (reversed exchange force),
+     virtualMassCoeffs Cvm -0.5 -> refused with the range
+ 10. an unused coefficient dictionary of a registered model (dividedCoeffs
+     with voidFractionModel centre) is accepted, as in OpenFOAM (the run
+     must succeed and say it is unused)
 Each run must fail (non-zero exit) and its log contain the strings listed.
 """
 import os
@@ -31,10 +42,37 @@ tests = [
      ["does not divide", "timeStep", "demProperties"]),
     ("subStepsMismatch", BASE + "demStepsPerFluidStep 7;\n", 1e-5,
      ["demStepsPerFluidStep 7", "does not match", "couplingProperties"]),
+    ("misspelledEntry", BASE + "momentumCoupeling explicit;\n", 1e-5,
+     ["Unknown entry 'momentumCoupeling'", "did you mean 'momentumCoupling'",
+      "couplingProperties"]),
+    ("misspelledCoefficient",
+     BASE.replace("centre", "divided") + "dividedCoeffs { nShell 3; }\n", 1e-5,
+     ["Unknown entry 'dividedCoeffs/nShell'", "did you mean 'nShells'",
+      "alphaMin", "couplingProperties"]),
+    ("misspelledCoeffsDict",
+     BASE.replace("SchillerNaumann", "Gidaspow") + "GidaspowCoefs { alphaMax 0.99; }\n",
+     1e-5, ["Unknown entry 'GidaspowCoefs'", "did you mean 'GidaspowCoeffs'"]),
+    ("alphaMinOutOfRange",
+     BASE.replace("centre", "divided") + "dividedCoeffs { alphaMin 2; }\n", 1e-5,
+     ["alphaMin 2", "dividedCoeffs", "must be in (0, 1)", "couplingProperties"]),
+    ("alphaMaxNegative",
+     BASE.replace("SchillerNaumann", "Gidaspow") + "GidaspowCoeffs { alphaMax -1; }\n",
+     1e-5, ["alphaMax -1", "GidaspowCoeffs", "must be in (0, 1]"]),
+    ("CvmNegative",
+     BASE.replace("pressureGradient", "pressureGradient virtualMass")
+     + "virtualMassCoeffs { Cvm -0.5; }\n", 1e-5,
+     ["Cvm -0.5", "virtualMassCoeffs", "must be >= 0"]),
+]
+
+# Runs that must succeed
+good = [
+    ("unusedCoeffsDict", BASE + "dividedCoeffs { nShells 2; alphaMin 0.3; }\n", 1e-5,
+     ["dividedCoeffs in", "not used (the model is not selected)"]),
 ]
 
 results = []
-for name, coupling, demDt, expect in tests:
+for name, coupling, demDt, expect in tests + good:
+    mustFail = (name, coupling, demDt, expect) in tests
     case = hc.workdir(f"bad-{name}")
     hc.block_mesh(case, (0, 0, 0), (0.02, 0.02, 0.02), (2, 2, 2),
                   {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
@@ -49,7 +87,7 @@ for name, coupling, demDt, expect in tests:
     rc = hc.run("demPimpleFoam", case, "log.demPimpleFoam", check=False)
     log = open(os.path.join(case, "log.demPimpleFoam")).read()
     missing = [s for s in expect if s not in log]
-    ok = rc != 0 and not missing
+    ok = (rc != 0 if mustFail else rc == 0) and not missing
     results.append(ok)
     print(f"{'PASS' if ok else 'FAIL'}: {name}: exit {rc}"
           + (f", missing in the message: {missing}" if missing else ""))

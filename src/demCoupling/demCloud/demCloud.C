@@ -22,6 +22,29 @@ Foam::demCloud::demCloud
     scalar rho
 )
 :
+    demCloud(U, p, rho, nullptr)
+{}
+
+
+Foam::demCloud::demCloud
+(
+    const volVectorField& U,
+    const volScalarField& p,
+    const demFreeSurface& fs
+)
+:
+    demCloud(U, p, fs.rho1, &fs)
+{}
+
+
+Foam::demCloud::demCloud
+(
+    const volVectorField& U,
+    const volScalarField& p,
+    scalar rho,
+    const demFreeSurface* fs
+)
+:
     mesh_(U.mesh()),
     dict_
     (
@@ -108,25 +131,20 @@ Foam::demCloud::demCloud
     io_.openSummary();
 
     updateParticles();
-}
 
+    if (fs)
+    {
+        settings_.checkFreeSurface();
+        freeSurface_.reset(new demFreeSurface(*fs));
+        submerged_.reset(new submergedVolume(mesh_, dict_));
+        forceContext_.setFreeSurface(freeSurface_());
+        Info<< "    free surface: phase densities " << fs->rho1 << ' '
+            << fs->rho2
+            << " kg/m3; rho and mu at a particle averaged over its volume"
+            << endl;
+    }
 
-Foam::demCloud::demCloud
-(
-    const volVectorField& U,
-    const volScalarField& p,
-    const demFreeSurface& fs
-)
-:
-    demCloud(U, p, fs.rho1)
-{
-    settings_.checkFreeSurface();
-    freeSurface_.reset(new demFreeSurface(fs));
-    submerged_.reset(new submergedVolume(mesh_, dict_));
-    forceContext_.setFreeSurface(freeSurface_());
-    Info<< "    free surface: phase densities " << fs.rho1 << ' ' << fs.rho2
-        << " kg/m3; rho and mu at a particle averaged over its volume"
-        << endl;
+    checkInputEntries();
 }
 
 
@@ -135,6 +153,37 @@ Foam::demCloud::~demCloud()
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demCloud::checkInputEntries() const
+{
+    if (!backend_)
+    {
+        // The ranks without the back end read the same file
+        return;
+    }
+
+    HashTable<wordList> coeffKeys;
+    coeffKeys.set(locate_->type() + "Coeffs", locate_->coeffKeys());
+    coeffKeys.set(voidFraction_->type() + "Coeffs", voidFraction_->coeffKeys());
+    coeffKeys.set(smoothing_->type() + "Coeffs", smoothing_->coeffKeys());
+    for (const forceModel& f : forces_)
+    {
+        coeffKeys.set(f.type() + "Coeffs", f.coeffKeys());
+    }
+
+    wordHashSet modelNames;
+    modelNames.insert(locateModel::dictionaryConstructorTablePtr_->toc());
+    modelNames.insert(voidFractionModel::dictionaryConstructorTablePtr_->toc());
+    modelNames.insert(smoothingModel::dictionaryConstructorTablePtr_->toc());
+    modelNames.insert(forceModel::dictionaryConstructorTablePtr_->toc());
+    modelNames.insert(demBackend::dictionaryConstructorTablePtr_->toc());
+
+    settings_.checkEntries
+    (
+        coeffKeys, backend_->dictKeys(), modelNames, freeSurface_.valid()
+    );
+}
+
 
 void Foam::demCloud::updateParticles()
 {

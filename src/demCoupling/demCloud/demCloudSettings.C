@@ -1,5 +1,7 @@
 #include "demCloudSettings.H"
 #include "error.H"
+#include "demPropertiesErrors.H"
+#include "DynamicList.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -114,6 +116,11 @@ void Foam::demCloudSettings::readParticleShapes
                 << typeNames << exit(FatalIOError);
         }
         const dictionary& d = e.dict();
+        demPropertiesErrors::checkKeys
+        (
+            dict_, d, "particleShapes/" + e.keyword(),
+            {"sphericity", "crosswiseSphericity", "dnByDv"}
+        );
         sphericity[t] = d.get<scalar>("sphericity");
         crosswiseSphericity[t] =
             d.getOrDefault<scalar>("crosswiseSphericity", sphericity[t]);
@@ -123,6 +130,20 @@ void Foam::demCloudSettings::readParticleShapes
             FatalIOErrorInFunction(d)
                 << "sphericity must be in (0, 1] in " << d.name()
                 << exit(FatalIOError);
+        }
+        if (crosswiseSphericity[t] <= 0 || crosswiseSphericity[t] > 1)
+        {
+            FatalIOErrorInFunction(d)
+                << "crosswiseSphericity " << crosswiseSphericity[t]
+                << " must be in (0, 1] in " << d.name()
+                << exit(FatalIOError);
+        }
+        if (dnByDv[t] <= 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "dnByDv " << dnByDv[t] << " must be > 0 in " << d.name()
+                << " (projected-area diameter over volume-equivalent"
+                << " diameter)" << exit(FatalIOError);
         }
         Info<< "    particle type " << e.keyword() << ": sphericity "
             << sphericity[t] << ", crosswise " << crosswiseSphericity[t]
@@ -140,5 +161,70 @@ void Foam::demCloudSettings::checkFreeSurface() const
             << " with a free surface (demInterFoam): use setI" << nl
             << "    (-eps grad p in the fluid, the pressure force on the"
             << " particles alone)" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::demCloudSettings::checkEntries
+(
+    const HashTable<wordList>& coeffKeys,
+    const wordList& backendKeys,
+    const wordHashSet& modelNames,
+    const bool freeSurface
+) const
+{
+    DynamicList<word> valid
+    (wordList({
+        "demBackend", "formulation", "momentumCoupling", "fluidVelocity",
+        "forceModels", "demStepsPerFluidStep", "particleShapes",
+        "locateModel", "voidFractionModel", "smoothingModel"
+    }));
+    valid.append(backendKeys);
+    if (freeSurface)
+    {
+        // demInterFoam: the coupling mode and the submerged volume
+        valid.append
+        (
+            wordList({"couplingMode", "submergedVolume",
+                      "interfacePlaneBelowSizeRatio"})
+        );
+    }
+    valid.append(coeffKeys.sortedToc());
+
+    // Unused coefficient dictionaries of registered models are kept
+    for (const entry& e : dict_)
+    {
+        const word& key = e.keyword();
+        if
+        (
+            e.isDict() && !valid.found(key) && key.size() > 6
+         && key.substr(key.size() - 6) == "Coeffs"
+         && modelNames.found(key.substr(0, key.size() - 6))
+        )
+        {
+            Info<< "    " << key << " in " << dict_.name()
+                << ": not used (the model is not selected)" << endl;
+            valid.append(key);
+        }
+    }
+
+    demPropertiesErrors::checkKeys(dict_, dict_, "", valid);
+
+    forAllConstIters(coeffKeys, iter)
+    {
+        const entry* e = dict_.findEntry(iter.key(), keyType::LITERAL);
+        if (!e)
+        {
+            continue;
+        }
+        if (!e->isDict())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry '" << iter.key() << "' in " << dict_.name()
+                << " must be a dictionary of the model's coefficients"
+                << nl << "    valid entries: " << iter.val()
+                << exit(FatalIOError);
+        }
+        demPropertiesErrors::checkKeys(dict_, e->dict(), iter.key(), iter.val());
     }
 }

@@ -8,6 +8,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "demSimulation.H"
+#include <sstream>
+#include <cmath>
 #include "OSspecific.H"
 #include "IOmanip.H"
 #include "mathematicalConstants.H"
@@ -152,6 +154,59 @@ bool Foam::demSimulation::removeDueWalls()
 }
 
 
+void Foam::demSimulation::checkInsertedMotion
+(
+    const polydem::ParticleState& p,
+    const std::string& entry,
+    const bool listed
+) const
+{
+    // An inserted velocity that carries a particle further than its own
+    // diameter in one DEM step, or a spin of more than 1 rad per step, cannot
+    // be integrated (and its kinetic energy may overflow, tripping the
+    // floating-point trap before the engine's blow-up guard): refused here,
+    // where the entry is known
+    const double dt = input_.config().timeStep;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const polydem::Vec3& v = p.velocity[i];
+        const polydem::Vec3& w = p.omega[i];
+        const double d = 2*p.radius[i];
+        const double vMax =
+            std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+        const double wMax =
+            std::max(std::abs(w.x), std::max(std::abs(w.y), std::abs(w.z)));
+        const std::string at =
+            listed ? entry + "[" + std::to_string(i) + "]" : entry;
+        std::ostringstream msg;
+        msg.precision(6);
+        if (!(vMax*dt <= d))
+        {
+            msg << "an inserted velocity (" << v.x << ' ' << v.y << ' '
+                << v.z << ") m/s moves particle " << p.id[i]
+                << " further than its diameter (" << d << " m) in one DEM"
+                << " step of " << dt << " s: lower the velocity or the time"
+                << " step";
+            throw polydem::Error
+            (
+                msg.str(), input_.dict().name(),
+                listed ? at + "/velocity" : at
+            );
+        }
+        if (!(wMax*dt <= 1))
+        {
+            msg << "an inserted angular velocity (" << w.x << ' ' << w.y
+                << ' ' << w.z << ") rad/s turns particle " << p.id[i]
+                << " by more than 1 rad in one DEM step of " << dt << " s";
+            throw polydem::Error
+            (
+                msg.str(), input_.dict().name(), listed ? at + "/omega" : at
+            );
+        }
+    }
+}
+
+
 polydem::ParticleState Foam::demSimulation::insert
 (
     size_t k,
@@ -167,6 +222,7 @@ polydem::ParticleState Foam::demSimulation::insert
     {
         polydem::ParticleState p =
             polydem::insertList(*system_, types, ins.particles, firstId);
+        checkInsertedMotion(p, "insertion/" + ins.name + "/particles", true);
         Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
             << (ut.polyhedron ? " polyhedra" : " spheres") << " (list)" << endl;
         return p;
@@ -196,6 +252,10 @@ polydem::ParticleState Foam::demSimulation::insert
             "insertion/" + ins.name + "/number"
         );
     }
+    checkInsertedMotion
+    (
+        added.particles, "insertion/" + ins.name + "/velocity", false
+    );
     Info<< "DEM insertion '" << ins.name << "': " << label(added.particles.size())
         << (ut.polyhedron ? " polyhedra" : " spheres")
         << ", solid fraction of the region "

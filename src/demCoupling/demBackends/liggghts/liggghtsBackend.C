@@ -8,6 +8,7 @@
 #include "Pstream.H"
 #include "IOmanip.H"
 #include "DynamicList.H"
+#include "demPropertiesErrors.H"
 #include <cmath>
 
 namespace Foam
@@ -130,6 +131,13 @@ Foam::liggghtsBackend::liggghtsBackend
     heldTorque_(),
     holding_(false)
 {
+    // A misspelled script entry would otherwise fall back silently (the
+    // restart script is optional)
+    demPropertiesErrors::checkKeys
+    (
+        dict, coeffs_, modelType + "Coeffs", {"inputScript", "restartScript"}
+    );
+
     // A start time with a LIGGGHTS restart file (the master's folder)
     const fileName restartFile(restartDir()/"liggghts.restart");
     const bool restart = fromMaster(isFile(restartFile));

@@ -18,7 +18,17 @@ Foam::virtualMassForce::virtualMassForce
 :
     forceModel(modelType, dict, context),
     Cvm_(coeffs_.getOrDefault<scalar>("Cvm", 0.5))
-{}
+{
+    // A negative added-mass coefficient makes the particle lighter than
+    // it is when it accelerates: unphysical and unstable
+    if (Cvm_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Cvm " << Cvm_ << " in " << modelType << "Coeffs of "
+            << dict.name() << " must be >= 0 (0.5 for a sphere)"
+            << exit(FatalIOError);
+    }
+}
 
 
 void Foam::virtualMassForce::cacheFields(const bool store)

@@ -19,7 +19,18 @@ Foam::voidFractionModel::voidFractionModel
     locate_(locate),
     coeffs_(dict.subOrEmptyDict(modelType + "Coeffs")),
     alphaMin_(coeffs_.getOrDefault<scalar>("alphaMin", 0.1))
-{}
+{
+    // alphaMin is the floor of the fluid fraction: 0 would divide by zero
+    // in the drag laws, 1 or more would remove the particles from the fluid
+    if (!(alphaMin_ > 0 && alphaMin_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "alphaMin " << alphaMin_ << " in " << modelType
+            << "Coeffs of " << dict.name() << " must be in (0, 1)"
+            << " (the smallest fluid fraction a cell may take)"
+            << exit(FatalIOError);
+    }
+}
 
 
 Foam::autoPtr<Foam::voidFractionModel> Foam::voidFractionModel::New

@@ -5,6 +5,8 @@
 
 #include "DeviceViews.hpp"
 
+#include <cmath>
+
 namespace polydem
 {
 namespace PD_BACKEND_NS
@@ -22,8 +24,35 @@ PD_HD inline Vec3 worldInverseInertiaTimes(const Quaternion& q, const Vec3& I, c
     return rotate(q, Vec3(b.x / I.x, b.y / I.y, b.z / I.z));
 }
 
+//- Largest absolute component: compared where a square could overflow
+PD_HD inline double maxAbs(const Vec3& a)
+{
+    const double x = a.x < 0 ? -a.x : a.x;
+    const double y = a.y < 0 ? -a.y : a.y;
+    const double z = a.z < 0 ? -a.z : a.z;
+    return x > y ? (x > z ? x : z) : (y > z ? y : z);
+}
+
+//- The squared displacement d since the last neighbour-list build, or
+//  +infinity for a particle that has blown up (the blow-up guard of the step
+//  loop, folded into the rebuild check's reduction): a position or an
+//  angular velocity that is not finite, a displacement beyond 1e100 m
+//  (tested without squaring, which could overflow and trip a floating-point
+//  trap before the guard speaks), or a turn of more than 1 rad in one step.
+//  A NaN fails every comparison and so lands in the infinity branch.
+PD_HD inline double guardedDisplacementSqr(const Vec3& d, const Vec3& omega, double dt)
+{
+    const double big = 1e100;
+    if (!(maxAbs(d) < big) || !(maxAbs(omega) * dt <= 1.0))
+    {
+        return HUGE_VAL;
+    }
+    return normSqr(d);
+}
+
 //- First half kick and drift; returns the squared displacement since the last
-//  neighbour-list build, so that the rebuild check needs no pass of its own
+//  neighbour-list build (guardedDisplacementSqr), so that the rebuild check
+//  and the blow-up guard need no pass of their own
 template<class Kind>
 struct KickDrift
 {
@@ -45,7 +74,7 @@ struct KickDrift
         {
             // A sphere: its orientation changes nothing, so it is not integrated
             p.omega[i] += (0.5 * dt / I.x) * p.torque[i];
-            return normSqr(x - ref[i]);
+            return guardedDisplacementSqr(x - ref[i], p.omega[i], dt);
         }
 
         const Quaternion q0 = p.q[i];
@@ -73,7 +102,7 @@ struct KickDrift
         }
         p.q[i] = q1;
         p.omega[i] = w;
-        return normSqr(x - ref[i]);
+        return guardedDisplacementSqr(x - ref[i], w, dt);
     }
 };
 

@@ -36,6 +36,8 @@
 #include "Diagnostics.hpp"
 
 #include <limits>
+#include <sstream>
+#include <cmath>
 
 #include <thrust/copy.h>
 #include <thrust/device_vector.h>
@@ -350,11 +352,89 @@ private:
             const double half = 0.5 * skin();
             if (maxSqr > half * half)
             {
+                // Every particle was within half the skin of its reference
+                // before this step: one now beyond the whole skin moved more
+                // than half of it in one step, and contacts may have been
+                // missed (or it has blown up: guardedDisplacementSqr)
+                if (maxSqr > skin() * skin())
+                {
+                    reportBlowUp(dt);
+                }
                 rebuild(true);
             }
             // Forces and the second half kick in the same pass
             forcesWith<Law, Kind, true>();
         }
+    }
+
+    //- Stop the run on the worst particle of a step that tripped the guard:
+    //  its id, type, position, velocity, angular velocity, the distance it
+    //  moved against the skin, its nearest plane wall, and what usually causes
+    //  it. Runs only on failure, so it may copy the state to the host.
+    [[noreturn]] void reportBlowUp(double dt) const
+    {
+        const auto id = toHost(id_);
+        const auto type = toHost(type_);
+        const auto radius = toHost(radius_);
+        const auto pos = toHost(pos_);
+        const auto vel = toHost(vel_);
+        const auto omega = toHost(omega_);
+        const auto ref = toHost(ref_);
+        int worst = -1;
+        double worstValue = -1;
+        for (size_t i = 0; i < id.size(); ++i)
+        {
+            const double v = guardedDisplacementSqr(pos[i] - ref[i], omega[i], dt);
+            if (v > worstValue)
+            {
+                worstValue = v;
+                worst = int(i);
+            }
+        }
+        std::ostringstream msg;
+        msg.precision(6);
+        auto vec = [&](const Vec3& a) { msg << '(' << a.x << ' ' << a.y << ' ' << a.z << ')'; };
+        msg << "the run has become unstable at t = " << time_ << " s (step " << step_ << "): particle id "
+            << id[worst] << " (type '" << config_.types[type[worst]].name << "', radius " << radius[worst]
+            << " m) at ";
+        vec(pos[worst]);
+        msg << " m, velocity ";
+        vec(vel[worst]);
+        msg << " m/s, angular velocity ";
+        vec(omega[worst]);
+        msg << " rad/s";
+        if (worstValue == HUGE_VAL)
+        {
+            msg << ": its position or angular velocity is not finite or beyond any domain, or it turns more than"
+                << " 1 rad in one step (dt = " << dt << " s)";
+        }
+        else
+        {
+            msg << ": it moved " << std::sqrt(worstValue) << " m since the last neighbour search, more than the"
+                << " neighbour skin " << skin() << " m, i.e. more than half the skin in one step (dt = " << dt
+                << " s), so contacts may have been missed";
+        }
+        // The nearest plane wall (the usual partner of a particle driven hard)
+        double nearest = HUGE_VAL;
+        std::string wallName;
+        for (const auto& w : config_.planes)
+        {
+            const double d = dot(pos[worst] - w.point, w.normal);
+            if (std::isfinite(d) && std::abs(d) < std::abs(nearest))
+            {
+                nearest = d;
+                wallName = w.name;
+            }
+        }
+        if (!wallName.empty())
+        {
+            msg << "; nearest plane wall '" << wallName << "' at signed distance " << nearest << " m"
+                << (nearest < 0 ? " (behind it)" : "");
+        }
+        msg << ". Usual causes: a time step too large for the contact stiffness (lower timeStep, or the"
+               " Young's modulus), particles inserted overlapping each other or a wall, an initial velocity or"
+               " an external (fluid) force far too large";
+        throw Error(msg.str());
     }
 
     void setupLaw()
