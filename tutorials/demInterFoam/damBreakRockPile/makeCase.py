@@ -41,7 +41,7 @@ P = {
                     dtDem=1e-4, tRelease=1.4, tCouple=2.4, flow=1.0, dtCfd=2e-3,
                     pours=2),
     "full":    dict(W=0.20, dx=0.02, ny=10, n=330, d=0.04, colW=0.15, Kv=5e9,
-                    dtDem=2e-5, tRelease=3.2, tCouple=4.6, flow=3.0, dtCfd=1e-3,
+                    dtDem=2e-5, tRelease=3.8, tCouple=5.2, flow=3.0, dtCfd=1e-3,
                     pours=5),
 }[mode]
 W, dx, d = P["W"], P["dx"], P["d"]
