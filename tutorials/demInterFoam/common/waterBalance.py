@@ -1,0 +1,32 @@
+"""Water balance of a demInterFoam tutorial run: the water volume
+int eps alpha dV (postProcessing/demInterFoam/<t0>/waterVolume.dat, written
+by the solver every step) plus the water that left through the open top
+(postProcessing/waterOut/<t0>/surfaceFieldValue.dat: sum of alphaPhi0.water
+over the patch, every step, times the step) against the start."""
+import os
+
+
+def _rows(path):
+    return [[float(x) for x in l.split()] for l in open(path)
+            if l.strip() and not l.startswith("#")]
+
+
+def balance(case, dt):
+    """(rows of (t, W, out, W + out), W0); out is the cumulative outflow."""
+    W = []
+    base = os.path.join(case, "postProcessing", "demInterFoam")
+    for t0 in sorted(os.listdir(base), key=float):
+        W += _rows(os.path.join(base, t0, "waterVolume.dat"))
+    flux = {}
+    base = os.path.join(case, "postProcessing", "waterOut")
+    for t0 in sorted(os.listdir(base), key=float):
+        for r in _rows(os.path.join(base, t0, "surfaceFieldValue.dat")):
+            flux[round(r[0]/dt)] = r[1]
+    # W0: the volume before the first step (the first row is after it, so
+    # add back that step's outflow: none, the water starts away from the top)
+    W0 = W[0][1]
+    out, res = 0.0, []
+    for r in W:
+        out += flux.get(round(r[0]/dt), 0.0)*dt
+        res.append((r[0], r[1], out, r[1] + out, r[2], r[3]))
+    return res, W0

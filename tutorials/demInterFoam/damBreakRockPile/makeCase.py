@@ -1,0 +1,361 @@
+#!/usr/bin/env python3
+"""Dam break on a collapsed rock pile: writes the two cases of Allrun.
+
+    python3 makeCase.py default|full|test
+
+  dem/      demFoam: rocks poured into a column held by two gates (planes
+            removed at tRelease), the column collapses into a pile, which
+            settles until tCouple.
+  coupled/  demInterFoam: the same demProperties (the same walls, the
+            gates already removed), started at tCouple from the DEM state
+            of dem/ (Allrun copies dem/<tCouple>/polyDEM), with the water
+            column released at tCouple.
+
+Sizes (README.md, "What is reduced"):
+  default   2D-ish slab 0.1 m thick (1 cell), 50 rocks d_eq = 0.06 m,
+            soft contacts (volumetricStiffness 2e9 N/m3, DEM step 1e-4 s)
+  full      3D flume 0.2 m wide (10 cells), 330 rocks d_eq = 0.04 m,
+            volumetricStiffness from the rocks' E (5.5e10 N/m3), step 2e-5 s
+  test      the default slab, 24 rocks, 1 s of flow on a coarser mesh
+"""
+import math
+import os
+import sys
+
+mode = sys.argv[1] if len(sys.argv) > 1 else "default"
+if mode not in ("default", "full", "test"):
+    sys.exit("usage: makeCase.py default|full|test")
+
+# ---- Geometry (damBreakRockPile.md; README: how the figure was read) ------
+L, H = 2.2, 1.0                 # flume length, height of the domain [m]
+waterW, waterH = 0.25, 0.8      # water column at x = 0 .. 0.25 m
+colX0 = 1.30                    # rock column between the gates x = 1.30 ..
+colH = 0.7                      # target height of the rock column [m]
+
+P = {
+    # W: flume width; dx: cell size; ny: cells across; n: rocks; d: d_eq
+    "default": dict(W=0.15, dx=0.025, ny=1, n=50, d=0.07, colW=0.18, Kv=5e8,
+                    dtDem=1e-4, tRelease=2.6, tCouple=3.8, flow=1.5, dtCfd=2e-3,
+                    pours=4),
+    "test":    dict(W=0.15, dx=0.05, ny=1, n=24, d=0.07, colW=0.18, Kv=5e8,
+                    dtDem=1e-4, tRelease=1.4, tCouple=2.4, flow=1.0, dtCfd=2e-3,
+                    pours=2),
+    "full":    dict(W=0.20, dx=0.02, ny=10, n=330, d=0.04, colW=0.15, Kv=5e9,
+                    dtDem=2e-5, tRelease=3.8, tCouple=5.2, flow=3.0, dtCfd=1e-3,
+                    pours=5),
+}[mode]
+W, dx, d = P["W"], P["dx"], P["d"]
+colX1 = colX0 + P["colW"]
+nx, nz = int(round(L/dx)), int(round(H/dx))
+tRelease, tCouple = P["tRelease"], P["tCouple"]
+tEnd = tCouple + P["flow"]
+slab = P["ny"] == 1
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+  Hedra tutorial demInterFoam/damBreakRockPile ({mode}), written by makeCase.py
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    object      {obj};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+
+def write(path, obj, body, cls="dictionary"):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(HEADER.format(mode=mode, cls=cls, obj=obj) + body)
+
+
+# ---- DEM: shared by both cases --------------------------------------------
+# Rock pours: the column is filled in batches (random sequential addition
+# jams near a solid fraction of 0.3, so each batch is placed in a tall box
+# above the column and falls in before the next one)
+per = [P["n"]//P["pours"] + (1 if k < P["n"] % P["pours"] else 0) for k in range(P["pours"])]
+pours = ""
+for k, num in enumerate(per):
+    pours += f"""    pour{k}
+    {{
+        type            randomFill;
+        particleType    rocks;
+        number          {num};
+        seed            {k + 1};
+        time            {0.6*k:g};
+        region
+        {{
+            type    box;    // holds the whole bounding sphere of each rock
+            min     ({colX0 + 1e-3:g} 1e-3 {0.05 + 0.15*k:g});
+            max     ({colX1 - 1e-3:g} {W - 1e-3:g} {2.7 + 0.05*k:g});
+        }}
+        velocity        (0 0 -0.5);
+    }}
+"""
+
+
+def plane(name, pt, nv, mat, extra=""):
+    return (f"    {name}\n    {{\n        type plane; point ({pt[0]:g} {pt[1]:g} {pt[2]:g});"
+            f" normal ({nv[0]:g} {nv[1]:g} {nv[2]:g}); material {mat};{extra}\n    }}\n")
+
+
+walls = (plane("floor", (0, 0, 0), (0, 0, 1), "steel")
+         + plane("inlet", (0, 0, 0), (1, 0, 0), "steel")
+         + plane("outlet", (L, 0, 0), (-1, 0, 0), "steel")
+         + plane("front", (0, 0, 0), (0, 1, 0), "steel")
+         + plane("back", (0, W, 0), (0, -1, 0), "steel")
+         # The gates that hold the column; removed at tRelease (also in the
+         # coupled case, where they are gone already: the wall list, and so
+         # the wall indices of the contact springs in the state, stays the same)
+         + plane("gateUpstream", (colX0, 0, 0), (1, 0, 0), "steel",
+                 f" activeUntil {tRelease:g}; displaySize 0.3;")
+         + plane("gateDownstream", (colX1, 0, 0), (-1, 0, 0), "steel",
+                 f" activeUntil {tRelease:g}; displaySize 0.3;"))
+
+demProperties = f"""// {P['n']} rocks poured between two gates into a column ~{colH} m high; the
+// gates are removed at t = {tRelease:g} s and the column collapses into a pile.
+device          cpu;
+timeStep        {P['dtDem']:g};
+gravity         (0 0 -9.81);
+
+// Rocks leaving this box are removed (none should)
+domain {{ min (-0.1 -0.1 -0.1); max ({L + 0.1:g} {W + 0.1:g} 3.5); }}
+
+contactModel
+{{
+    law                         overlapVolume;  // Fn = Kv x overlap volume (the talk's law)
+    volumetricStiffness         {P['Kv']:g};    // [N/m3]; README "Contact stiffness"
+    tangentialStiffnessRatio    0.5;            // K_T = K_n/2 (the talk: K_T >= K_n/2)
+}}
+
+materials
+{{
+    // E and nu are read but not used by the overlapVolume law (README)
+    rock  {{ youngsModulus 3e9;    poissonsRatio 0.3;  density 2700; }}
+    steel {{ youngsModulus 2.1e11; poissonsRatio 0.33; density 7850; }}
+}}
+
+interactions
+{{
+    default     {{ restitution 0.6; friction 0.3; }}                   // rock on rock
+    rockOnFlume {{ materials (rock steel); restitution 0.8; friction 0.35; }} // the flume's values
+}}
+
+particleTypes
+{{
+    rocks
+    {{
+        shape       polyhedron;
+        material    rock;
+        geometry
+        {{
+            type                rock;
+            equivalentDiameter  {d:g};
+            elongation          0.8;
+            flatness            0.8;
+            points              12;     // 12 vertices, 20 faces
+            seed                3;
+            shapes              10;
+        }}
+    }}
+}}
+
+walls
+{{
+{walls}}}
+
+insertion
+{{
+{pours}}}
+
+output
+{{
+    format      ascii;
+    vtk         true;
+}}
+"""
+
+# ---- dem/: demFoam --------------------------------------------------------
+write("dem/constant/demProperties", "demProperties", demProperties)
+write("dem/system/controlDict", "controlDict", f"""application     demFoam;
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         {tCouple:g};
+deltaT          0.01;
+writeControl    runTime;
+writeInterval   0.1;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  12;
+writeCompression off;
+timeFormat      general;
+timePrecision   6;
+runTimeModifiable false;
+functions
+{{
+    pile {{ type boundingBox; libs (demFunctionObjects); interval 0.02; }}
+}}
+""")
+
+# ---- coupled/: demInterFoam -----------------------------------------------
+c = "coupled"
+write(f"{c}/constant/demProperties", "demProperties", demProperties)
+sideType = "slip" if slab else "noSlip"
+write(f"{c}/system/blockMeshDict", "blockMeshDict", f"""convertToMeters 1;
+vertices
+(
+    (0 0 0) ({L} 0 0) ({L} {W} 0) (0 {W} 0)
+    (0 0 {H}) ({L} 0 {H}) ({L} {W} {H}) (0 {W} {H})
+);
+blocks ( hex (0 1 2 3 4 5 6 7) ({nx} {P['ny']} {nz}) simpleGrading (1 1 1) );
+edges ();
+boundary
+(
+    walls {{ type wall; faces ((0 4 7 3) (1 2 6 5) (0 3 2 1)); }}
+    sides {{ type wall; faces ((0 1 5 4) (3 7 6 2)); }}
+    atmosphere {{ type patch; faces ((4 5 6 7)); }}
+);
+""")
+write(f"{c}/system/setFieldsDict", "setFieldsDict", f"""defaultFieldValues ( volScalarFieldValue alpha.water 0 );
+regions
+(
+    boxToCell
+    {{
+        box (-1 -1 -1) ({waterW} {W + 1} {waterH});
+        fieldValues ( volScalarFieldValue alpha.water 1 );
+    }}
+);
+""")
+write(f"{c}/system/controlDict", "controlDict", f"""application     demInterFoam;
+startFrom       startTime;
+startTime       {tCouple:g};
+stopAt          endTime;
+endTime         {tEnd:g};
+deltaT          {P['dtCfd']:g};     // fixed: a whole multiple of the DEM step
+writeControl    runTime;
+writeInterval   0.05;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  10;
+writeCompression off;
+timeFormat      general;
+timePrecision   6;
+runTimeModifiable false;
+adjustTimeStep  no;
+maxCo           1;
+maxAlphaCo      1;
+maxDeltaT       1;
+functions
+{{
+    // The pile's extent
+    pile {{ type boundingBox; libs (demFunctionObjects); interval 0.01; }}
+    // Water leaving through the open top (splash): sum over the patch of the
+    // MULES water flux, every step, for the water balance of postProcess.py
+    waterOut
+    {{
+        type            surfaceFieldValue;
+        libs            (fieldFunctionObjects);
+        writeControl    timeStep;
+        writeInterval   1;
+        log             false;
+        writeFields     false;
+        regionType      patch;
+        name            atmosphere;
+        operation       sum;
+        fields          (alphaPhi0.water);
+    }}
+}}
+""")
+write(f"{c}/system/fvSchemes", "fvSchemes", """ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    div(rhoPhi,U)  Gauss linearUpwind grad(U);
+    div(phi,alpha)  Gauss vanLeer;
+    div(phirb,alpha) Gauss linear;
+    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+""")
+write(f"{c}/system/fvSolution", "fvSolution", """solvers
+{
+    "alpha.water.*"
+    {
+        nAlphaCorr 2; nAlphaSubCycles 1; cAlpha 1;
+        // 20 limiter iterations: with 5 the water fraction left [0, 1] by
+        // up to 1e-4 where the front runs through the rocks (measured in
+        // damBreakRockPile; 4e-8 with 20, also with 1e-12 solver tolerances
+        // it was 7e-5 with 5: the limiter, not the tolerances)
+        MULESCorr yes; nLimiterIter 20;
+        solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0;
+    }
+    "pcorr.*" { solver PCG; preconditioner DIC; tolerance 1e-9; relTol 0; }
+    p_rgh { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0.01; }
+    p_rghFinal { $p_rgh; relTol 0; }
+    "U.*" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0; }
+}
+PIMPLE
+{
+    momentumPredictor no;
+    nOuterCorrectors 1;
+    nCorrectors 2;
+    nNonOrthogonalCorrectors 0;
+    pRefCell 0;
+    pRefValue 0;
+    // No "discrete rest state" start of p_rgh: a released water column is
+    // not at rest, and the rest-state p_rgh of a column with a vertical side
+    // has a gradient in the air far from it that pushes the particles for
+    // the first step (README, "Pressure at the start")
+    hydrostaticInitialisation false;
+}
+""")
+write(f"{c}/constant/transportProperties", "transportProperties", """phases (water air);
+water { transportModel Newtonian; nu 1e-06; rho 1000; }
+air { transportModel Newtonian; nu 1.48e-05; rho 1; }
+sigma 0.07;
+""")
+write(f"{c}/constant/turbulenceProperties", "turbulenceProperties", "simulationType laminar;\n")
+write(f"{c}/constant/g", "g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
+      cls="uniformDimensionedVectorField")
+write(f"{c}/constant/couplingProperties", "couplingProperties", """couplingMode        unresolved;     // resolved: to come (README)
+formulation         setI;
+momentumCoupling    implicit;
+locateModel         hinted;
+// Rocks of 1.2-2.4 cells: the exact cell-rock overlap volumes
+voidFractionModel   exactOverlap;
+smoothingModel      none;
+// Drag of the mixture around the rock (Ergun/Wen-Yu) and the pressure force
+// with the buoyancy of each rock's own submerged volume
+forceModels         (Gidaspow freeSurfacePressure);
+""")
+t0 = f"{c}/{tCouple:g}"
+bc = f"    walls {{ type noSlip; }}\n    sides {{ type {sideType}; }}\n"
+write(f"{t0}/U", "U", "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+      "boundaryField\n{\n" + bc +
+      "    atmosphere { type pressureInletOutletVelocity; value uniform (0 0 0); }\n}\n",
+      cls="volVectorField")
+write(f"{t0}/p_rgh", "p_rgh", "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
+      "boundaryField\n{\n    walls { type fixedFluxPressure; value uniform 0; }\n"
+      "    sides { type fixedFluxPressure; value uniform 0; }\n"
+      "    atmosphere { type totalPressure; p0 uniform 0; value uniform 0; }\n}\n",
+      cls="volScalarField")
+write(f"{t0}/alpha.water", "alpha.water", "dimensions [0 0 0 0 0 0 0];\ninternalField uniform 0;\n"
+      "boundaryField\n{\n    walls { type zeroGradient; }\n    sides { type zeroGradient; }\n"
+      "    atmosphere { type inletOutlet; inletValue uniform 0; value uniform 0; }\n}\n",
+      cls="volScalarField")
+
+with open("case.info", "w") as f:
+    for k, v in dict(mode=mode, L=L, H=H, W=W, dx=dx, nx=nx, ny=P["ny"], nz=nz, n=P["n"], d=d,
+                     colX0=colX0, colX1=colX1, waterW=waterW, waterH=waterH,
+                     tRelease=tRelease, tCouple=tCouple, tEnd=tEnd, Kv=P["Kv"],
+                     dtDem=P["dtDem"], dtCfd=P["dtCfd"]).items():
+        f.write(f"{k} {v}\n")
+print(f"makeCase.py {mode}: {P['n']} rocks d_eq {d} m in a column {colX0}..{colX1} m, "
+      f"mesh {nx} x {P['ny']} x {nz}, DEM to {tCouple} s (gates off at {tRelease} s), "
+      f"coupled {tCouple} .. {tEnd} s")
