@@ -176,7 +176,11 @@ void Foam::functionObjects::chargeShape::readSettings
     }
     shellRadius_ = dict.get<scalar>("shellRadius");
     layer_ = dict.getOrDefault<scalar>("layer", 2*dMax);
-    nBins_ = dict.getOrDefault<label>("nBins", 72);
+    // Bins at least two largest diameters long at the shell (a bin of
+    // less than a ball is covered or not by chance), at most 72 (5 deg)
+    const label fitting =
+        label(std::floor(constant::mathematical::twoPi*shellRadius_/(2*dMax)));
+    nBins_ = dict.getOrDefault<label>("nBins", std::max(label(8), std::min(label(72), fitting)));
     coverFraction_ = dict.getOrDefault<scalar>("coverFraction", 0.5);
     axialGiven_ = dict.found("axialMin") || dict.found("axialMax");
     axialMin_ = dict.getOrDefault<scalar>("axialMin", -GREAT);
