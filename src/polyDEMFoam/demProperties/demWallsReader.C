@@ -65,6 +65,23 @@ polydem::WallMotion Foam::demWallsReader::readMotion
 }
 
 
+polydem::Vec3 Foam::demWallsReader::readLoadPoint
+(
+    const dictionary& wallDict,
+    const polydem::WallMotion& motion
+)
+{
+    // About the rotation axis unless given: the torque that drives a drum
+    if (wallDict.found("loadPoint", keyType::LITERAL))
+    {
+        return toVec3(wallDict.get<vector>("loadPoint"));
+    }
+    return motion.kind == polydem::MotionKind::rotation
+        ? motion.origin
+        : polydem::Vec3();
+}
+
+
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
 
 std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
@@ -92,7 +109,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
         static const wordList wallKeys
         ({
             "type", "point", "normal", "material", "motion", "file", "scale",
-            "activeUntil", "displaySize"
+            "activeUntil", "displaySize", "loadPoint"
         });
         demPropertiesErrors::checkKeys(dict, wd, "walls/" + e.keyword(), wallKeys);
         wallInfo info;
@@ -118,6 +135,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             w.normal = toVec3(wd.get<vector>("normal"));
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
             w.motion = readMotion(dict, wd);
+            w.loadPoint = readLoadPoint(wd, w.motion);
             info.isPlane = true;
             info.index = label(config.planes.size());
             config.planes.push_back(w);
@@ -128,6 +146,7 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
             w.name = e.keyword();
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
             w.motion = readMotion(dict, wd);
+            w.loadPoint = readLoadPoint(wd, w.motion);
             w.mesh = demSurfaceReader::read
             (
                 dict, wd, "file", "walls/" + e.keyword() + "/file"

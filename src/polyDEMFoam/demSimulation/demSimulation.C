@@ -99,6 +99,54 @@ void Foam::demSimulation::startSystem(polydem::Snapshot state)
     polydem::SimulationConfig config = input_.configWith(wallActive_, wallMap_);
     system_.reset(new polydem::System(std::move(config)));
     system_->initialise(std::move(state));
+    if (wallLoadsRequested_)
+    {
+        system_->engine().enableWallLoads(true);
+    }
+}
+
+
+void Foam::demSimulation::collectWallLoads()
+{
+    polydem::Engine& engine = system_->engine();
+    if (!engine.wallLoadsEnabled())
+    {
+        return;
+    }
+    const polydem::WallLoadSum s = engine.wallLoadSum();
+    engine.resetWallLoadSum();
+    const label before = wallLoadSteps_;
+    wallLoadSteps_ += label(s.steps);
+    if (wallLoadSteps_ == 0)
+    {
+        return;
+    }
+    // Running means over the steps so far: each chunk weighs by its steps
+    const double a = double(before)/wallLoadSteps_;
+    const double b = 1.0/wallLoadSteps_;
+    for (size_t f = 0; f < wallMap_.size(); ++f)
+    {
+        polydem::WallLoad& m = wallLoadMean_[f];
+        m.force = a*m.force;
+        m.torque = a*m.torque;
+        const int k = wallMap_[f];
+        if (k >= 0 && size_t(k) < s.sum.size())
+        {
+            m.force += b*s.sum[k].force;
+            m.torque += b*s.sum[k].torque;
+            m.point = s.sum[k].point;
+        }
+    }
+}
+
+
+void Foam::demSimulation::requestWallLoads() const
+{
+    if (!wallLoadsRequested_)
+    {
+        wallLoadsRequested_ = true;
+        system_->engine().enableWallLoads(true);
+    }
 }
 
 
@@ -736,6 +784,9 @@ Foam::demSimulation::demSimulation
     stepsPerDeltaT_(computeStepsPerDeltaT()),
     stateCache_(),
     stateCacheStep_(-1),
+    wallLoadsRequested_(false),
+    wallLoadMean_(),
+    wallLoadSteps_(0),
     summary_(),
     clock_(),
     wallStart_(0),
@@ -906,6 +957,10 @@ void Foam::demSimulation::evolve()
 {
     insertDue();
 
+    // The wall loads of this time step only
+    wallLoadMean_.assign(wallMap_.size(), polydem::WallLoad());
+    wallLoadSteps_ = 0;
+
     const int64_t target = system_->engine().step() + stepsPerDeltaT_;
     while (system_->engine().step() < target)
     {
@@ -919,6 +974,7 @@ void Foam::demSimulation::evolve()
             }
         }
         system_->advance(next - step);
+        collectWallLoads();
         removeDueWalls();
     }
     report();

@@ -99,6 +99,9 @@ struct PlaneWall
     Vec3 normal{0, 0, 1};    //!< pointing into the particle side
     int material = 0;
     WallMotion motion;
+    //- The point the wall load's torque is taken about, in the wall's
+    //  frame at t = 0 (it moves with the wall; on a rotation axis it stays)
+    Vec3 loadPoint;
 };
 
 struct MeshWall
@@ -107,6 +110,8 @@ struct MeshWall
     TriangleMesh mesh;       //!< geometry at t = 0
     int material = 0;
     WallMotion motion;
+    //- As PlaneWall::loadPoint
+    Vec3 loadPoint;
 };
 
 struct SimulationConfig

@@ -7,6 +7,7 @@
 #include "polyDEM/Snapshot.hpp"
 
 #include <string>
+#include <vector>
 
 namespace polydem
 {
@@ -31,6 +32,25 @@ struct Statistics
     std::size_t particlesInContact = 0;
     std::size_t neighbourListBuilds = 0;
     double maxOverlapRatio = 0;          //!< largest overlap / smaller radius (0 under overlapVolume)
+};
+
+//- The load of the particles on one wall: the resultant of the contact
+//  forces the particles exert on it (minus what the wall exerts on them) and
+//  their moment about the wall's load point (the rolling and twisting
+//  resistance moments included) [N, N m]
+struct WallLoad
+{
+    Vec3 force;
+    Vec3 torque;
+    Vec3 point;    //!< where the torque is taken: the load point at that time (world)
+};
+
+//- Wall loads summed over the steps taken since the last reset: divide by
+//  steps for the mean over that time (each step weighs the same, dt fixed)
+struct WallLoadSum
+{
+    std::vector<WallLoad> sum;   //!< per wall (planes, then meshes); point: the last step's
+    std::int64_t steps = 0;
 };
 
 class Engine
@@ -64,6 +84,20 @@ public:
     //! per-step monitoring)
     virtual Energies energies(bool includeElastic = true) const = 0;
     virtual Statistics statistics() const = 0;
+
+    //- Wall loads (planes, then meshes, in config order): off until enabled,
+    //  as they cost a pass over particles x walls per step. Each particle
+    //  keeps its share per wall; the shares are summed in blocks of a fixed
+    //  size in particle order, then the blocks in order: the result is the
+    //  same whatever the thread count, and a restart (same particle order)
+    //  continues it to the bit. The particle dynamics do not change.
+    virtual void enableWallLoads(bool on) = 0;
+    virtual bool wallLoadsEnabled() const = 0;
+    //- The loads of the last force evaluation (zero before one with loads on)
+    virtual std::vector<WallLoad> wallLoads() const = 0;
+    //- The loads summed over the steps since the last reset (or the enabling)
+    virtual WallLoadSum wallLoadSum() const = 0;
+    virtual void resetWallLoadSum() = 0;
 
     virtual double time() const = 0;
     virtual std::int64_t step() const = 0;

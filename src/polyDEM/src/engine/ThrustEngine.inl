@@ -92,6 +92,7 @@ public:
         step_ = s.step;
         setupLaw();
         setupPlanes();
+        setupWallLoadPoints();
         uploadParticles(s.particles);
         if (s.referencePosition.size() == s.particles.size())
         {
@@ -295,6 +296,38 @@ public:
         return s;
     }
 
+    void enableWallLoads(bool on) override
+    {
+        if (on == wallLoadsOn_) return;
+        wallLoadsOn_ = on;
+        const int nWalls = int(config_.planes.size() + config_.meshes.size());
+        wallShare_.clear();
+        wallLoadCurrent_.assign(on ? nWalls : 0, WallShare());
+        wallLoadSum_.assign(on ? nWalls : 0, WallShare());
+        wallLoadSteps_ = 0;
+    }
+
+    bool wallLoadsEnabled() const override { return wallLoadsOn_; }
+
+    std::vector<WallLoad> wallLoads() const override
+    {
+        return loadsOf(toHost(wallLoadCurrent_));
+    }
+
+    WallLoadSum wallLoadSum() const override
+    {
+        WallLoadSum s;
+        s.sum = loadsOf(toHost(wallLoadSum_));
+        s.steps = wallLoadSteps_;
+        return s;
+    }
+
+    void resetWallLoadSum() override
+    {
+        thrust::fill(thrust::device, wallLoadSum_.begin(), wallLoadSum_.end(), WallShare());
+        wallLoadSteps_ = 0;
+    }
+
     double time() const override { return time_; }
     int64_t step() const override { return step_; }
 
@@ -364,6 +397,7 @@ private:
             }
             // Forces and the second half kick in the same pass
             forcesWith<Law, Kind, true>();
+            reduceWallLoads(true);
         }
     }
 
@@ -920,6 +954,69 @@ private:
     void computeForces()
     {
         dispatch([&](auto law, auto kind) { this->forcesWith<decltype(law), decltype(kind), false>(); });
+        reduceWallLoads(false);
+    }
+
+    //- Every wall's load point and motion (planes, then meshes)
+    void setupWallLoadPoints()
+    {
+        std::vector<WallLoadPoint> lp;
+        for (const auto& w : config_.planes) lp.push_back(WallLoadPoint{motionOf(w.motion), w.loadPoint});
+        for (const auto& w : config_.meshes) lp.push_back(WallLoadPoint{motionOf(w.motion), w.loadPoint});
+        toDevice(wallLoadPoints_, lp);
+        wallLoadPointsHost_ = lp;
+    }
+
+    //- Host loads from device sums, with the load points at the current time
+    std::vector<WallLoad> loadsOf(const std::vector<WallShare>& s) const
+    {
+        std::vector<WallLoad> out(s.size());
+        for (size_t w = 0; w < s.size(); ++w)
+        {
+            out[w].force = s[w].force;
+            out[w].torque = s[w].torque;
+            out[w].point = wallLoadPointsHost_[w].at(time_);
+        }
+        return out;
+    }
+
+    //- Shares of the last force pass -> each wall's load (WallLoadBlocks,
+    //  WallLoadTotal: fixed order); accumulate: a step, add it to the sums
+    void reduceWallLoads(bool accumulate)
+    {
+        if (!wallLoadsOn_) return;
+        const int n = int(id_.size());
+        const int nWalls = int(wallLoadCurrent_.size());
+        if (nWalls == 0) return;
+        if (accumulate) ++wallLoadSteps_;
+        const auto first = thrust::counting_iterator<int>(0);
+        if (n == 0 || wallShare_.size() != size_t(n) * nWalls)
+        {
+            // No particles (or no force pass with loads on yet): nothing on the walls
+            thrust::fill(thrust::device, wallLoadCurrent_.begin(), wallLoadCurrent_.end(), WallShare());
+            return;
+        }
+        const int nBlocks = (n + wallLoadBlock - 1) / wallLoadBlock;
+        wallLoadBlocks_.resize(size_t(nBlocks) * nWalls);
+        thrust::for_each(thrust::device, first, first + nBlocks * nWalls,
+                         WallLoadBlocks{ptr(wallShare_), ptr(pos_), ptr(wallLoadPoints_), n, nWalls, time_,
+                                        ptr(wallLoadBlocks_)});
+        thrust::for_each(thrust::device, first, first + nWalls,
+                         WallLoadTotal{ptr(wallLoadBlocks_), nBlocks, nWalls, accumulate,
+                                       ptr(wallLoadCurrent_), ptr(wallLoadSum_)});
+    }
+
+    //- The shares of the force pass (null when wall loads are off)
+    WallShares wallShares()
+    {
+        WallShares ws;
+        const int nWalls = int(config_.planes.size() + config_.meshes.size());
+        if (!wallLoadsOn_ || nWalls == 0) return ws;
+        wallShare_.resize(id_.size() * size_t(nWalls));
+        ws.share = ptr(wallShare_);
+        ws.nWalls = nWalls;
+        ws.nPlanes = int(config_.planes.size());
+        return ws;
     }
 
     //- Pair pass, then the per-particle sums with the planes, then the meshes;
@@ -959,6 +1056,7 @@ private:
         (void)nPairs;
         const int nMesh = int(config_.meshes.size());
         const WallContact<Law, Kind> wall{pv, lv};
+        const WallShares shares = wallShares();
         auto particleForces = [&](auto kick) {
             constexpr bool kickHere = decltype(kick)::value;
             ParticleForces<Law, Kind, kickHere, ownFromPairs> k;
@@ -978,6 +1076,7 @@ private:
             k.planeXi = ptr(planeXi_);
             k.planeMr = rolling ? ptr(planeMr_) : nullptr;
             k.wallContactCount = ptr(wallContactCount_);
+            k.shares = shares;
             thrust::for_each(thrust::device, first, first + n, k);
         };
         if (nMesh == 0)
@@ -999,6 +1098,7 @@ private:
                 k.planeXi = ptr(planeXi_);
                 k.planeMr = rolling ? ptr(planeMr_) : nullptr;
                 k.wallContactCount = ptr(wallContactCount_);
+                k.shares = shares;
                 SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(ownForce_), ptr(ownTorque_)}.run(n);
                 return;
             }
@@ -1020,6 +1120,7 @@ private:
         m.cellTriangles = meshCellTri_.empty() ? nullptr : ptr(meshCellTri_);
         m.meshSlots = ptr(meshSlots_);
         m.wallContactCount = ptr(wallContactCount_);
+        m.shares = shares;
         thrust::for_each(thrust::device, first, first + n, m);
     }
 
@@ -1141,6 +1242,14 @@ private:
     dvec<Vec3> triA_, triB_, triC_;
     dvec<int> meshCellStart_, meshCellTri_;
     dvec<MeshSlot> meshSlots_;
+
+    // Wall loads (off unless enabled): per-particle shares, block sums,
+    // the last pass's loads and their running sums
+    bool wallLoadsOn_ = false;
+    dvec<WallShare> wallShare_, wallLoadBlocks_, wallLoadCurrent_, wallLoadSum_;
+    dvec<WallLoadPoint> wallLoadPoints_;
+    std::vector<WallLoadPoint> wallLoadPointsHost_;
+    int64_t wallLoadSteps_ = 0;
 };
 
 } // namespace PD_BACKEND_NS

@@ -14,6 +14,44 @@ namespace polydem
 namespace PD_BACKEND_NS
 {
 
+//- One particle's share of one wall's load: the force and the torque about
+//  the particle's centre that the wall's contacts exert on the particle
+//  (WallLoadReduce turns them into the load on the wall)
+struct WallShare
+{
+    Vec3 force;
+    Vec3 torque;
+
+    PD_HD void add(const Vec3& f, const Vec3& t)
+    {
+        force += f;
+        torque += t;
+    }
+};
+
+//- Per particle nWalls shares (planes, then meshes), null when wall loads are
+//  off; the plane pass clears a particle's shares before its walls add to them
+struct WallShares
+{
+    WallShare* share = nullptr;
+    int nWalls = 0;
+    int nPlanes = 0;
+
+    PD_HD WallShare* plane(int i, int p) const
+    {
+        return share ? share + size_t(i) * nWalls + p : nullptr;
+    }
+    PD_HD WallShare* mesh(int i, int m) const
+    {
+        return share ? share + size_t(i) * nWalls + nPlanes + m : nullptr;
+    }
+    PD_HD void clear(int i) const
+    {
+        if (!share) return;
+        for (int w = 0; w < nWalls; ++w) share[size_t(i) * nWalls + w] = WallShare();
+    }
+};
+
 //- Contact of particle i with a wall under law Law (shared by planes and meshes)
 template<class Law, class Kind>
 struct WallContact
@@ -30,7 +68,7 @@ struct WallContact
     PD_CONTACT void point
     (
         int i, int material, const Vec3& wallPoint, const Vec3& wallVel, const Vec3& wallOmega,
-        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load
     ) const
     {
         const Vec3 x = p.pos[i];
@@ -51,8 +89,10 @@ struct WallContact
         k.relVelocity = p.vel[i] + cross(p.omega[i], arm) - wallVel;
         k.relOmega = p.omega[i] - wallOmega;
         const ContactResult res = contactForce<Law>(law.law, coefficients(i, material), k, xi, mr);
+        const Vec3 t = cross(arm, res.force) + res.rollingTorque;
         F += res.force;
-        T += cross(arm, res.force) + res.rollingTorque;
+        T += t;
+        if (load) load->add(res.force, t);
     }
 
     //- Volumetric contact. ov.normal points from the wall into the particle;
@@ -60,7 +100,7 @@ struct WallContact
     PD_HD void volumetric
     (
         int i, int material, const OverlapResult& ov, const Vec3& wallVel, const Vec3& wallOmega,
-        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load
     ) const
     {
         const Vec3 x = p.pos[i];
@@ -79,8 +119,10 @@ struct WallContact
         k.relVelocity = p.vel[i] + cross(p.omega[i], arm) - wallVel;
         k.relOmega = p.omega[i] - wallOmega;
         const ContactResult res = contactForce<Law>(law.law, coefficients(i, material), k, xi, mr);
+        const Vec3 t = cross(arm, res.force) + res.rollingTorque;
         F += res.force;
-        T += cross(arm, res.force) + res.rollingTorque;
+        T += t;
+        if (load) load->add(res.force, t);
     }
 };
 
@@ -116,6 +158,7 @@ struct ParticleForces
     Vec3* planeXi;
     Vec3* planeMr;          //!< null without a rolling model
     int* wallContactCount;
+    WallShares shares;      //!< wall loads (share null: off)
 
     //- Gravity and the external force and torque of particle i
     PD_HD void base(int i, Vec3& F, Vec3& T) const
@@ -166,12 +209,13 @@ struct ParticleForces
                 }
                 ++walls;
                 wall.volumetric(i, pl.material, ov, pl.motion.velocityAt(ov.centroid),
-                                pl.motion.angularVelocity(), planeXi[c], mr, F, T);
+                                pl.motion.angularVelocity(), planeXi[c], mr, F, T,
+                                shares.plane(i, planePlane[c]));
                 continue;
             }
             ++walls;
             wall.point(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
-                       planeXi[c], mr, F, T);
+                       planeXi[c], mr, F, T, shares.plane(i, planePlane[c]));
         }
         return walls;
     }
@@ -180,6 +224,7 @@ struct ParticleForces
     PD_HD void finish(int i, Vec3 F, Vec3 T) const
     {
         const ParticleView& p = wall.p;
+        shares.clear(i);
         wallContactCount[i] = planeContacts(i, F, T);
         p.force[i] = F;
         p.torque[i] = T;
@@ -288,6 +333,7 @@ struct MeshWallKernel
     const int* cellTriangles;
     MeshSlot* meshSlots;     //!< per particle maxMeshSlots slots
     int* wallContactCount;
+    WallShares shares;       //!< wall loads (share null: off); cleared by ParticleForces
 
     PD_HD void operator()(int i) const
     {
@@ -340,7 +386,7 @@ struct MeshWallKernel
                     }
                     ++walls;
                     wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
-                                          mesh.motion.angularVelocity(), sxi, smr, F, T);
+                                          mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
                     MeshSlot& ns = next[nNext++];
                     ns.mesh = w;
                     ns.triangle = tri;
@@ -439,12 +485,12 @@ struct MeshWallKernel
                     // tangent plane at the closest point
                     const OverlapResult ov = sphereHalfSpaceOverlap(xi_, ri, wallPoint, -nWorld);
                     wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
-                                          mesh.motion.angularVelocity(), sxi, smr, F, T);
+                                          mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
                 }
                 else
                 {
                     wall.point(i, mesh.material, wallPoint, mesh.motion.velocityAt(wallPoint),
-                                mesh.motion.angularVelocity(), sxi, smr, F, T);
+                                mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
                 }
                 MeshSlot& ns = next[nNext++];
                 ns.mesh = w;
@@ -463,6 +509,71 @@ struct MeshWallKernel
         p.force[i] = F;
         p.torque[i] = T;
         if (Kick) finalKick<Kind>(p, law.typeShape, dt, i, F, T);
+    }
+};
+
+//- Particles per block of the wall-load sum: fixed, so that the order of the
+//  additions depends on the particle order only (not on threads or device)
+constexpr int wallLoadBlock = 256;
+
+//- Where a wall's torque is taken: its load point carried with its motion
+struct WallLoadPoint
+{
+    RigidMotion motion;
+    Vec3 point;     //!< in the wall's frame at t = 0
+
+    PD_HD Vec3 at(double t) const { return motion.toWorld(point, t, motion.rotationAt(t)); }
+};
+
+//- One (block, wall): the load on the wall from the block's particles, in
+//  particle order: F_w = -sum f_i, T_w = -sum [(x_i - O_w) x f_i + t_i]
+struct WallLoadBlocks
+{
+    const WallShare* share;
+    const Vec3* pos;
+    const WallLoadPoint* points;
+    int n;
+    int nWalls;
+    double time;
+    WallShare* blockSum;    //!< nBlocks x nWalls
+
+    PD_HD void operator()(int k) const
+    {
+        const int b = k / nWalls;
+        const int w = k % nWalls;
+        const Vec3 O = points[w].at(time);
+        WallShare s;
+        const int end = (b + 1) * wallLoadBlock < n ? (b + 1) * wallLoadBlock : n;
+        for (int i = b * wallLoadBlock; i < end; ++i)
+        {
+            const WallShare& q = share[size_t(i) * nWalls + w];
+            s.force -= q.force;
+            s.torque -= cross(pos[i] - O, q.force) + q.torque;
+        }
+        blockSum[k] = s;
+    }
+};
+
+//- One wall: its block sums in block order; the step's load, and its running sum
+struct WallLoadTotal
+{
+    const WallShare* blockSum;
+    int nBlocks;
+    int nWalls;
+    bool accumulate;
+    WallShare* current;
+    WallShare* sum;
+
+    PD_HD void operator()(int w) const
+    {
+        WallShare s;
+        for (int b = 0; b < nBlocks; ++b)
+        {
+            s.force += blockSum[size_t(b) * nWalls + w].force;
+            s.torque += blockSum[size_t(b) * nWalls + w].torque;
+        }
+        current[w] = s;
+        if (accumulate) sum[w].add(s.force, s.torque);
     }
 };
 
