@@ -4,10 +4,13 @@ the entry and what was expected (FatalIOError / FatalError, non-zero exit,
 no crash, no hang):
 
   1. couplingMode misspelled (resolvd)    -> couplingProperties, the valid modes
+                                             (unresolved resolved)
   2. submergedVolume misspelled (planar)  -> couplingProperties, the valid names
   3. formulation setII with a free surface -> couplingProperties, use setI
   4. nAlphaSubCycles 2 with particles      -> fvSolution, nAlphaSubCycles 1
   5. 0/alpha.water missing                 -> OpenFOAM's error naming the file
+  6. resolved mode, interface misspelled   -> couplingProperties/directForcing,
+     (penalized)                              the valid interfaces
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -43,7 +46,7 @@ def make(name, coupling):
 tests = [
     ("couplingMode", BASE.replace("couplingMode unresolved;", "couplingMode resolvd;"),
      None, ["couplingMode 'resolvd'", "couplingProperties", "Valid couplingMode values",
-            "unresolved"]),
+            "unresolved", "(unresolved resolved)"]),
     ("submergedVolume", BASE.replace("interfacePlane;", "planar;"),
      None, ["Unknown submergedVolume 'planar'", "couplingProperties",
             "cellWeights interfacePlane auto"]),
@@ -53,6 +56,9 @@ tests = [
      ["nAlphaSubCycles 2", "fvSolution", "use nAlphaSubCycles 1"]),
     ("alphaMissing", BASE, "noAlpha",
      ["alpha.water", "cannot find file"]),
+    ("resolvedInterface",
+     "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { interface penalized; }\n",
+     None, ["interface penalized", "couplingProperties", "explicit", "penalised", "none"]),
 ]
 
 results = []

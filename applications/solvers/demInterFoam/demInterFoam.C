@@ -35,7 +35,7 @@ Description
     interFoam (two incompressible, isothermal immiscible fluids, VOF with
     MULES, p_rgh, surface tension, turbulence, optional mesh motion and
     refinement) with particles from the DEM back end (demCloud,
-    constant/couplingProperties), unresolved / semi-resolved mode: the
+    constant/couplingProperties). Unresolved / semi-resolved mode: the
     volume-averaged equations with the fluid fraction eps,
         ddt(eps alpha1) + div(phi alpha1) + compression = Sp alpha1,
             Sp = ddt(eps) + div(phi)      (alphaSuSp.H)
@@ -49,6 +49,42 @@ Description
     (freeSurfacePressure). All coupling calls: createCoupling.H,
     couplingEvolve.H, couplingWrite.H. Without particles the operations
     are interFoam's.
+
+    couplingMode resolved (constant/couplingProperties; the default is
+    unresolved): the particles are immersed bodies with their true shapes
+    (spheres, convex polyhedra), the immersed boundary of demIbFoam
+    (directForcingIB, subdictionary directForcing; ibParticles with the DEM
+    through demBackend, entries as in demIbFoam's ibProperties) on
+    interFoam's equations (eps = 1):
+        ddt(alpha1) + div(phi alpha1) + compression = 0
+        ddt(rho U) + div(rhoPhi U) - div(rho nuEff ...) =
+            f_sigma - gh grad rho - grad p_rgh
+          + rho fIB + mu beta (Us - U)                         (UEqn.H)
+    fIB the kept forcing that drives U to the rigid-body velocity Us in the
+    cells whose centre is inside a body, beta the penalisation of the
+    interface cells (a Shortley-Weller wall on the true surface) with the
+    local mu = rho nuEff: the forcing of demIbFoam times the local mixture
+    density. After the PIMPLE loop (resolvedStep.H): U corrected to Us in
+    the forced cells (no projection: phi stays pEqn.H's divergence-free
+    flux, which MULES needs), the force on each body from integrating the
+    rho U equation over its cells,
+        F = - sum_c f_c V_c + d/dt sum_c rho_c lambda_c U_c V_c - M g,
+        M = sum_c rho_c lambda_c V_c,
+    (f_c the force density of the forcing on the fluid, lambda the solid
+    fraction), i.e. the stress of the outside fluid on the surface,
+    hydrostatics included: -M g takes out the weight of the fluid inside
+    that the fluid equations carried, so the buoyancy is that of the
+    pressure on the surface whatever alpha1 is inside, and nothing else is
+    added (no Archimedes term). Then alpha1 in the cells entirely inside a
+    body (lambda = 1) is set from the fluid around them
+    (directForcingIB::fillSolidCells): the forcing carries alpha1 with the
+    body, so a body entering the water would carry air under the surface
+    and release it through its interface cells (a gas source); these
+    cells have no weight in the water outside the bodies,
+    sum (1 - lambda) alpha1 V (postProcessing/demInterFoam/waterVolume.dat),
+    which is not changed, and a mean of neighbours keeps 0 <= alpha1 <= 1
+    without clipping. Then the DEM is sub-cycled and the new mask built.
+    Lubrication is not available in this mode (it needs a constant nu).
 
 \*---------------------------------------------------------------------------*/
 
@@ -66,6 +102,8 @@ Description
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
 #include "demCloud.H"
+#include "directForcingIB.H"
+#include "ibParticles.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -193,6 +231,7 @@ int main(int argc, char *argv[])
             }
         }
 
+        #include "resolvedStep.H"
         #include "couplingWrite.H"
 
         runTime.write();

@@ -389,10 +389,12 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
 }
 
 
-void Foam::directForcingIB::correctVelocity
+template<class RhoOf, class PenalOf>
+void Foam::directForcingIB::correctVelocityWith
 (
     volVectorField& U,
-    scalar rhoFluid,
+    const RhoOf& rhoOf,
+    const PenalOf& penalOf,
     const UList<ibBody>& bodies
 )
 {
@@ -424,20 +426,20 @@ void Foam::directForcingIB::correctVelocity
             // Kept forcing drives U to Us exactly
             const vector du = us[celli] - u[celli];
             fib[celli] += du/dt;
-            f = rhoFluid*fib[celli]*V[celli];
+            f = rhoOf(celli)*fib[celli]*V[celli];
             u[celli] += du;
         }
         else if (beta[celli] > 0)
         {
             // Penalised interface cell: the implicit source of the
             // momentum equation, evaluated with the solved velocity
-            f = rhoFluid*beta[celli]*(us[celli] - u[celli])*V[celli];
+            f = penalOf(celli)*beta[celli]*(us[celli] - u[celli])*V[celli];
         }
         else
         {
             // Explicit interface: one-step correction weighted by lambda
             const vector du = lam[celli]*(us[celli] - u[celli]);
-            f = rhoFluid*du*V[celli]/dt;
+            f = rhoOf(celli)*du*V[celli]/dt;
             u[celli] += du;
         }
         force_[bi] -= f;
@@ -451,6 +453,224 @@ void Foam::directForcingIB::correctVelocity
     Pstream::listCombineScatter(force_);
     Pstream::listCombineGather(torque_, plusEqOp<vector>());
     Pstream::listCombineScatter(torque_);
+}
+
+
+void Foam::directForcingIB::correctVelocity
+(
+    volVectorField& U,
+    scalar rhoFluid,
+    const UList<ibBody>& bodies
+)
+{
+    const auto rhoOf = [rhoFluid](const label) { return rhoFluid; };
+    correctVelocityWith(U, rhoOf, rhoOf, bodies);
+}
+
+
+void Foam::directForcingIB::correctVelocity
+(
+    volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& mu,
+    const UList<ibBody>& bodies
+)
+{
+    const scalarField& r = rho.primitiveField();
+    const scalarField& m = mu.primitiveField();
+    const scalar nu = nu_;
+    correctVelocityWith
+    (
+        U,
+        [&r](const label c) { return r[c]; },
+        [&m, nu](const label c) { return m[c]/nu; },
+        bodies
+    );
+}
+
+
+Foam::tmp<Foam::fvVectorMatrix> Foam::directForcingIB::source
+(
+    const volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& mu
+) const
+{
+    tmp<fvVectorMatrix> tS(new fvVectorMatrix(U, dimForce));
+    fvVectorMatrix& S = tS.ref();
+    S += rho*fIB_;
+    if (interface_ == "penalised")
+    {
+        // beta is per nu_ (built with the constructor's nu): mu beta/nu
+        const volScalarField muBeta
+        (
+            "muBetaIB",
+            mu/dimensionedScalar("nu", dimViscosity, nu_)*beta_
+        );
+        S += muBeta*Us_ - fvm::Sp(muBeta, U);
+    }
+    return tS;
+}
+
+
+void Foam::directForcingIB::bodyMomentum
+(
+    const volVectorField& U,
+    const volScalarField& rho,
+    const UList<ibBody>& bodies,
+    List<vector>& P,
+    List<vector>& L,
+    List<scalar>& M
+) const
+{
+    P.setSize(bodies.size());
+    L.setSize(bodies.size());
+    M.setSize(bodies.size());
+    P = Zero;
+    L = Zero;
+    M = Zero;
+
+    const vectorField& C = mesh_.C();
+    const scalarField& V = mesh_.V();
+    const scalarField& lam = lambda_.primitiveField();
+    const scalarField& r = rho.primitiveField();
+    const vectorField& u = U.primitiveField();
+
+    forAll(u, celli)
+    {
+        const label bi = cellBody_[celli];
+        if (bi < 0)
+        {
+            continue;
+        }
+        const scalar m = r[celli]*lam[celli]*V[celli];
+        M[bi] += m;
+        P[bi] += m*u[celli];
+        L[bi] += (C[celli] - bodies[bi].position) ^ (m*u[celli]);
+    }
+
+    Pstream::listCombineGather(P, plusEqOp<vector>());
+    Pstream::listCombineScatter(P);
+    Pstream::listCombineGather(L, plusEqOp<vector>());
+    Pstream::listCombineScatter(L);
+    Pstream::listCombineGather(M, plusEqOp<scalar>());
+    Pstream::listCombineScatter(M);
+}
+
+
+void Foam::directForcingIB::fillSolidCells
+(
+    volScalarField& f,
+    const vector& g
+) const
+{
+    const scalarField& lam = lambda_.primitiveField();
+    scalarField& v = f.primitiveFieldRef();
+
+    // known: the value is set (fluid and partial cells, then the filled)
+    boolList known(mesh_.nCells(), true);
+    label nUnknown = 0;
+    forAll(lam, celli)
+    {
+        if (cellBody_[celli] >= 0 && lam[celli] >= 1)
+        {
+            known[celli] = false;
+            ++nUnknown;
+        }
+    }
+    if (returnReduce(nUnknown, sumOp<label>()) == 0)
+    {
+        return;
+    }
+
+    const vector gHat = g/max(mag(g), VSMALL);
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+
+    // Pass 0: across faces normal to g only (the level continues
+    // horizontally); pass 1: across any face
+    for (label pass = 0; pass < 2; ++pass)
+    {
+        while (true)
+        {
+            // Sums of the known neighbours' values (Jacobi sweep: the cells
+            // found in this sweep are used from the next one on)
+            scalarField sum(mesh_.nCells(), Zero);
+            labelList n(mesh_.nCells(), Zero);
+            auto useFace = [&](const vector& S)
+            {
+                return pass == 1 || mag(S & gHat) < 0.5*mag(S);
+            };
+            forAll(nei, facei)
+            {
+                if (!useFace(Sf[facei]))
+                {
+                    continue;
+                }
+                const label o = own[facei], ne = nei[facei];
+                if (!known[o] && known[ne])
+                {
+                    sum[o] += v[ne];
+                    ++n[o];
+                }
+                else if (!known[ne] && known[o])
+                {
+                    sum[ne] += v[o];
+                    ++n[ne];
+                }
+            }
+            // Across processor boundaries
+            boolList nbrKnown;
+            syncTools::swapBoundaryCellList(mesh_, known, nbrKnown);
+            scalarField nbrV;
+            syncTools::swapBoundaryCellList(mesh_, v, nbrV);
+            for (const polyPatch& pp : pbm)
+            {
+                if (!pp.coupled())
+                {
+                    continue;
+                }
+                forAll(pp, i)
+                {
+                    const label facei = pp.start() + i;
+                    const label bFacei = facei - mesh_.nInternalFaces();
+                    const label c = own[facei];
+                    if
+                    (
+                        !known[c] && nbrKnown[bFacei]
+                     && useFace(mesh_.faceAreas()[facei])
+                    )
+                    {
+                        sum[c] += nbrV[bFacei];
+                        ++n[c];
+                    }
+                }
+            }
+
+            label nSet = 0;
+            forAll(v, celli)
+            {
+                if (!known[celli] && n[celli] > 0)
+                {
+                    v[celli] = sum[celli]/n[celli];
+                    known[celli] = true;
+                    ++nSet;
+                    --nUnknown;
+                }
+            }
+            if (returnReduce(nSet, sumOp<label>()) == 0)
+            {
+                break;
+            }
+        }
+        if (returnReduce(nUnknown, sumOp<label>()) == 0)
+        {
+            break;
+        }
+    }
+    f.correctBoundaryConditions();
 }
 
 

@@ -73,14 +73,14 @@ void Foam::ibParticles::readBodies()
 }
 
 
-Foam::ibParticles::ibParticles(const fvMesh& mesh)
+Foam::ibParticles::ibParticles(const fvMesh& mesh, const word& dictName)
 :
     mesh_(mesh),
     dict_
     (
         IOobject
         (
-            "ibProperties",
+            dictName,
             mesh.time().constant(),
             mesh,
             IOobject::MUST_READ,
@@ -195,6 +195,64 @@ void Foam::ibParticles::evolve
         previousVelocity_[i] = b.velocity;
     }
 
+    advance(force, torque);
+}
+
+
+void Foam::ibParticles::evolve
+(
+    const List<vector>& F,
+    const List<vector>& T,
+    const List<scalar>& M,
+    const vector& g,
+    const List<vector>& P,
+    const List<vector>& L,
+    const List<vector>& Pnext,
+    const List<vector>& Lnext
+)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    List<vector> force(F.size()), torque(T.size());
+    forAll(F, i)
+    {
+        const ibBody& b = bodies_[i];
+        // No Archimedes term: the weight of the fluid inside that the
+        // fluid equations carried is taken out, buoyancy is in F_IB
+        vector Fi = F[i] - M[i]*g;
+        vector Ti = T[i];
+        if (internalFluid_ == "rigid")
+        {
+            Fi += M[i]*(b.velocity - previousVelocity_[i])/dt;
+        }
+        else if (internalFluid_ == "integrated")
+        {
+            const vector P0 =
+                previousP_.lookup(b.id, M[i]*previousVelocity_[i]);
+            const vector L0 = previousL_.lookup(b.id, Zero);
+            Fi += (P[i] - P0)/dt;
+            Ti += (L[i] - L0)/dt;
+            previousP_.set(b.id, Pnext[i]);
+            previousL_.set(b.id, Lnext[i]);
+        }
+        if (lubForce_.size() == bodies_.size())
+        {
+            Fi += lubForce_[i];
+        }
+        force[i] = Fi;
+        torque[i] = Ti;
+        previousVelocity_[i] = b.velocity;
+    }
+
+    advance(force, torque);
+}
+
+
+void Foam::ibParticles::advance
+(
+    List<vector>& force,
+    List<vector>& torque
+)
+{
     if (backend_.valid())
     {
         // The first handover goes through start() (the back end's restart
