@@ -234,109 +234,122 @@ void Foam::demCloud::computeForces
     const label n = particles_.size();
     const List<label>& cell = weights_.cells();
 
-    // The fluid velocity the particles see: the cell velocity, or the
-    // superficial velocity reconstructed from the face fluxes divided by the
-    // void fraction (continuity-consistent where alpha jumps, e.g. at the
-    // edges of a packed bed, where the cell-centred U is poor)
-    tmp<volVectorField> tUseen;
-    if (settings_.fluxVelocity())
+    // No particles anywhere (n counts all ranks' particles, so every rank
+    // takes the same branch): the fluid fields the force models sample are
+    // not built, so that a solver without particles costs what its parent
+    // solver costs (bench/damBreak); the exchange fields below are zero
+    beta_.setSize(n);
+    Fcoupled_.setSize(n);
+    Fparticle_.setSize(n);
+    if (n == 0)
     {
-        tUseen = fvc::reconstruct(alphaPhi)/exchange_.voidfraction();
+        Uf_.clear();
+        submergedFraction_.clear();
+        usedPlane_.clear();
     }
     else
     {
-        tUseen = tmp<volVectorField>(U_);
-    }
-    const volVectorField& Useen = tUseen();
-
-    // Weighted averages at the particles (partial sums, then summed)
-    Uf_ = weights_.average(Useen.primitiveField());
-    const List<scalar> alphaP
-    (
-        weights_.average(exchange_.voidfraction().primitiveField())
-    );
-    const List<scalar> nuP(weights_.average(nu.primitiveField()));
-
-    // Free surface: mixture rho and mu = rho nu averaged over the particle's
-    // own volume, and the submerged part of the particle
-    List<scalar> rhoP, muP;
-    if (freeSurface_)
-    {
-        const demFreeSurface& fs = freeSurface_();
-        rhoP = weights_.average(fs.rho.primitiveField());
-        muP = weights_.average
-        (
-            scalarField(fs.rho.primitiveField()*nu.primitiveField())
-        );
-        submerged_->fractions
-        (
-            particles_, volume_, shapes_, weights_,
-            exchange_.voidfraction(), fs.alpha1, fs.g,
-            submergedFraction_, usedPlane_
-        );
-    }
-
-    // Fields the force models need, built and sampled by each model
-    forceContext_.setViscosity(nu, nuEff);
-    for (forceModel& m : forces_)
-    {
-        m.cacheFields(true);
-    }
-
-    // Forces, by the owner of each particle
-    beta_.setSize(n);
-    beta_ = 0;
-    Fcoupled_.setSize(n);
-    Fcoupled_ = Zero;
-    Fparticle_.setSize(n);
-    Fparticle_ = Zero;
-
-    const scalar pi = constant::mathematical::pi;
-    forAll(cell, i)
-    {
-        if (cell[i] < 0)
+        // The fluid velocity the particles see: the cell velocity, or the
+        // superficial velocity reconstructed from the face fluxes divided by the
+        // void fraction (continuity-consistent where alpha jumps, e.g. at the
+        // edges of a packed bed, where the cell-centred U is poor)
+        tmp<volVectorField> tUseen;
+        if (settings_.fluxVelocity())
         {
-            continue;
+            tUseen = fvc::reconstruct(alphaPhi)/exchange_.voidfraction();
         }
-        particleSample ps;
-        ps.index = i;
-        ps.type = particles_.type[i];
-        ps.Up = particles_.velocity[i];
-        ps.omega = particles_.omega[i];
-        ps.Vp = volume_[i];
-        ps.d = cbrt(6*volume_[i]/pi);
-        ps.rhoP = particles_.mass[i]/max(volume_[i], VSMALL);
-        ps.sphericity = sphericity_[ps.type];
-        ps.crosswiseSphericity = crosswiseSphericity_[ps.type];
-        ps.dnByDv = dnByDv_[ps.type];
-        ps.U = Uf_[i];
-        ps.alpha = alphaP[i];
-        ps.rho = rho_;
-        ps.nu = nuP[i];
-        ps.deltaT = mesh_.time().deltaTValue();
+        else
+        {
+            tUseen = tmp<volVectorField>(U_);
+        }
+        const volVectorField& Useen = tUseen();
+
+        // Weighted averages at the particles (partial sums, then summed)
+        Uf_ = weights_.average(Useen.primitiveField());
+        const List<scalar> alphaP
+        (
+            weights_.average(exchange_.voidfraction().primitiveField())
+        );
+        const List<scalar> nuP(weights_.average(nu.primitiveField()));
+
+        // Free surface: mixture rho and mu = rho nu averaged over the particle's
+        // own volume, and the submerged part of the particle
+        List<scalar> rhoP, muP;
         if (freeSurface_)
         {
-            const scalar rhoMix = max(rhoP[i], VSMALL);
-            ps.rho = rhoMix;
-            ps.nu = muP[i]/rhoMix;
-            ps.submergedFraction = submergedFraction_[i];
+            const demFreeSurface& fs = freeSurface_();
+            rhoP = weights_.average(fs.rho.primitiveField());
+            muP = weights_.average
+            (
+                scalarField(fs.rho.primitiveField()*nu.primitiveField())
+            );
+            submerged_->fractions
+            (
+                particles_, volume_, shapes_, weights_,
+                exchange_.voidfraction(), fs.alpha1, fs.g,
+                submergedFraction_, usedPlane_
+            );
         }
 
-        particleForce pf;
-        for (const forceModel& m : forces_)
+        // Fields the force models need, built and sampled by each model
+        forceContext_.setViscosity(nu, nuEff);
+        for (forceModel& m : forces_)
         {
-            m.addForce(ps, pf);
+            m.cacheFields(true);
         }
-        beta_[i] = pf.beta;
-        Fcoupled_[i] = pf.Fcoupled;
-        Fparticle_[i] = pf.Fparticle;
-    }
 
-    for (forceModel& m : forces_)
-    {
-        m.cacheFields(false);
+        // Forces, by the owner of each particle
+        beta_ = 0;
+        Fcoupled_ = Zero;
+        Fparticle_ = Zero;
+
+        const scalar pi = constant::mathematical::pi;
+        forAll(cell, i)
+        {
+            if (cell[i] < 0)
+            {
+                continue;
+            }
+            particleSample ps;
+            ps.index = i;
+            ps.type = particles_.type[i];
+            ps.Up = particles_.velocity[i];
+            ps.omega = particles_.omega[i];
+            ps.Vp = volume_[i];
+            ps.d = cbrt(6*volume_[i]/pi);
+            ps.rhoP = particles_.mass[i]/max(volume_[i], VSMALL);
+            ps.sphericity = sphericity_[ps.type];
+            ps.crosswiseSphericity = crosswiseSphericity_[ps.type];
+            ps.dnByDv = dnByDv_[ps.type];
+            ps.U = Uf_[i];
+            ps.alpha = alphaP[i];
+            ps.rho = rho_;
+            ps.nu = nuP[i];
+            ps.deltaT = mesh_.time().deltaTValue();
+            if (freeSurface_)
+            {
+                const scalar rhoMix = max(rhoP[i], VSMALL);
+                ps.rho = rhoMix;
+                ps.nu = muP[i]/rhoMix;
+                ps.submergedFraction = submergedFraction_[i];
+            }
+
+            particleForce pf;
+            for (const forceModel& m : forces_)
+            {
+                m.addForce(ps, pf);
+            }
+            beta_[i] = pf.beta;
+            Fcoupled_[i] = pf.Fcoupled;
+            Fparticle_[i] = pf.Fparticle;
+        }
+
+        for (forceModel& m : forces_)
+        {
+            m.cacheFields(false);
+        }
+        forceContext_.clearViscosity();
     }
-    forceContext_.clearViscosity();
 
     allSum(beta_);
     allSum(Fcoupled_);
