@@ -6,7 +6,9 @@
 #                       malformedStl|unstableTimeStep|indivisibleDeltaT|
 #                       twistingWithoutCoefficient|negativeTwistingFriction|
 #                       misspelledTopKey|misspelledWallKey|misspelledInsertionKey|
-#                       negativeActiveUntil|negativeGap
+#                       negativeActiveUntil|negativeGap|pairRestitution|
+#                       tinyTimeStep|negativeDeltaT|listOverlap|listBehindWall|
+#                       sliverShape
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -81,6 +83,37 @@ negativeGap)
     # used to be reported as insertion/beads/number
     setEntry $props insertion/beads/gap -1e-3
     expectFile="constant/demProperties"; expectEntry="insertion/beads/gap" ;;
+pairRestitution)
+    # used to be reported as interactions/restitution, without the pair
+    setEntry $props interactions/glassOnSteel/restitution 1.5
+    expectFile="constant/demProperties"; expectEntry="interactions/glassOnSteel/restitution"
+    expectAlso="(0, 1]" ;;
+tinyTimeStep)
+    # used to be refused as "does not divide" (1e-12 for 1e-5: a units slip)
+    setEntry $props timeStep 1e-12
+    expectFile="constant/demProperties"; expectEntry="timeStep"
+    expectAlso="check the units" ;;
+negativeDeltaT)
+    # used to be refused as "does not divide"
+    setEntry system/controlDict deltaT -0.002
+    expectFile="system/controlDict"; expectEntry="deltaT"
+    expectAlso="positive" ;;
+listOverlap)
+    # two beads at one point used to never interact
+    setEntry $props insertion "{ pair { type list; particleType beads; particles ( { position (0.01 0.01 0.01); } { position (0.01 0.01 0.01); } { position (0.02 0.02 0.01); } ); } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/pair/particles[0]"
+    expectAlso="insertion/pair/particles[1]" ;;
+listBehindWall)
+    # a bead below the floor used to be driven downwards
+    setEntry $props insertion "{ low { type list; particleType beads; particles ( { position (0.01 0.01 0.01); } { position (0.01 0.02 -0.001); } ); } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/low/particles[1]"
+    expectAlso="behind plane wall 'floor'" ;;
+sliverShape)
+    # a 50:50:1 plate (sphericity 0.16) has no stable time step
+    setEntry $props contactModel "{ law overlapVolume; volumetricStiffness 1e10; }"
+    setEntry $props particleTypes/flake "{ shape polyhedron; material glass; geometry { type box; size (0.01 0.01 0.0002); } }"
+    expectFile="constant/demProperties"; expectEntry="particleTypes/flake"
+    expectAlso="sphericity" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

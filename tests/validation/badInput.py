@@ -15,7 +15,9 @@ that names what is wrong.
   9. out-of-range coefficients: dividedCoeffs alphaMin 2 (void fraction 2
      everywhere), GidaspowCoeffs alphaMax -1 (reversed exchange force),
      virtualMassCoeffs Cvm -0.5 -> refused with the range
- 10. an unused coefficient dictionary of a registered model (dividedCoeffs
+ 10. adjustTimeStep yes in controlDict (demPimpleFoam keeps deltaT fixed:
+     it used to be ignored) -> refused, naming adjustTimeStep
+ 11. an unused coefficient dictionary of a registered model (dividedCoeffs
      with voidFractionModel centre) is accepted, as in OpenFOAM (the run
      must succeed and say it is unused)
 Each run must fail (non-zero exit) and its log contain the strings listed.
@@ -58,6 +60,8 @@ tests = [
     ("alphaMaxNegative",
      BASE.replace("SchillerNaumann", "Gidaspow") + "GidaspowCoeffs { alphaMax -1; }\n",
      1e-5, ["alphaMax -1", "GidaspowCoeffs", "must be in (0, 1]"]),
+    ("adjustTimeStep", BASE, 1e-5,
+     ["adjustTimeStep", "controlDict", "demPimpleFoam"]),
     ("CvmNegative",
      BASE.replace("pressureGradient", "pressureGradient virtualMass")
      + "virtualMassCoeffs { Cvm -0.5; }\n", 1e-5,
@@ -76,7 +80,8 @@ for name, coupling, demDt, expect in tests + good:
     case = hc.workdir(f"bad-{name}")
     hc.block_mesh(case, (0, 0, 0), (0.02, 0.02, 0.02), (2, 2, 2),
                   {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
-    hc.control_dict(case, 0.002, 1e-3, 1)
+    hc.control_dict(case, 0.002, 1e-3, 1,
+                    "adjustTimeStep yes;\nmaxCo 0.5;\n" if name == "adjustTimeStep" else "")
     hc.schemes_solution(case)
     hc.transport(case, 1e-6, 1000)
     hc.fields(case, {"walls": "type noSlip;"}, {"walls": "type fixedFluxPressure;"})

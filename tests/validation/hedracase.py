@@ -202,7 +202,8 @@ def read_summary(case):
 
 
 COLS = dict(t=0, n=1, nOut=2, F=slice(3, 6), Pc=slice(6, 9), Sf=slice(9, 12),
-            relErr=12, Up=slice(13, 16), xp=slice(16, 19), alphaMin=19)
+            relErr=12, Up=slice(13, 16), xp=slice(16, 19), alphaMin=19,
+            weightCompletion=20)
 
 
 _workdirs = []

@@ -11,6 +11,10 @@ no crash, no hang):
   5. 0/alpha.water missing                 -> OpenFOAM's error naming the file
   6. resolved mode, interface misspelled   -> couplingProperties/directForcing,
      (penalized)                              the valid interfaces
+  7. resolved mode, a misspelled entry     -> couplingProperties, the closest
+     (solidAlpa; it used to be ignored)       valid name (solidAlpha)
+  8. local time stepping (localEuler)      -> fvSchemes: the particles need a
+                                              physical time step
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -59,6 +63,10 @@ tests = [
     ("resolvedInterface",
      "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { interface penalized; }\n",
      None, ["interface penalized", "couplingProperties", "explicit", "penalised", "none"]),
+    ("resolvedMisspelled",
+     "couplingMode resolved;\ndemBackend polyDEM;\nsolidAlpa transported;\n",
+     None, ["Unknown entry 'solidAlpa'", "did you mean 'solidAlpha'", "couplingProperties"]),
+    ("localEuler", BASE, "LTS", ["localEuler", "fvSchemes", "physical time step"]),
 ]
 
 results = []
@@ -70,6 +78,10 @@ for name, coupling, change, expect in tests:
         open(p, "w").write(txt)
     elif change == "noAlpha":
         os.remove(os.path.join(case, "0/alpha.water"))
+    elif change == "LTS":
+        p = os.path.join(case, "system/fvSchemes")
+        txt = open(p).read().replace("default Euler;", "default localEuler;")
+        open(p, "w").write(txt)
     hc.run("blockMesh", case, "log.blockMesh")
     rc = hc.run("demInterFoam", case, "log.demInterFoam", check=False, timeout=120)
     log = open(os.path.join(case, "log.demInterFoam")).read()

@@ -37,6 +37,7 @@ Description
 #include "directForcingIB.H"
 #include "ibParticles.H"
 #include "ibRefinementIndicator.H"
+#include "demBackend.H"
 
 int main(int argc, char *argv[])
 {
@@ -50,6 +51,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    demBackend::refuseAdjustTimeStep(runTime, "demIbFoam");
     #include "createDynamicFvMesh.H"
     #include "createDyMControls.H"
     #include "createFields.H"

@@ -104,6 +104,7 @@ Description
 #include "demCloud.H"
 #include "directForcingIB.H"
 #include "ibParticles.H"
+#include "demBackend.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -132,10 +133,33 @@ int main(int argc, char *argv[])
 
     turbulence->validate();
 
+    if (LTS)
+    {
+        // Local time stepping has no physical time, and the DEM needs one
+        FatalErrorInFunction
+            << "ddtSchemes localEuler (local time stepping) in "
+            << mesh.time().system()/"fvSchemes" << " is not available in"
+            << " demInterFoam: the particles need one physical time step;"
+            << " use Euler (or CrankNicolson) with adjustTimeStep"
+            << exit(FatalError);
+    }
+
     if (!LTS)
     {
         #include "CourantNo.H"
         #include "setInitialDeltaT.H"
+        if (adjustTimeStep && demStepNow() > 0)
+        {
+            // A whole number of DEM steps (setDeltaT.H)
+            runTime.setDeltaT
+            (
+                demBackend::compatibleDeltaT
+                (
+                    runTime, runTime.deltaTValue(), demStepNow()
+                ),
+                false
+            );
+        }
     }
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

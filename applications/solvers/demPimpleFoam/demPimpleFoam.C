@@ -28,6 +28,7 @@ Description
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
 #include "demCloud.H"
+#include "demBackend.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,6 +44,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    demBackend::refuseAdjustTimeStep(runTime, "demPimpleFoam");
     #include "createMesh.H"
     #include "createControl.H"
     #include "createFields.H"

@@ -1,4 +1,5 @@
 #include "demCloud.H"
+#include <cmath>
 #include "demParallel.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
@@ -361,6 +362,7 @@ void Foam::demCloud::computeForces
         const vector Fdrag = beta_[i]*(Uf_[i] - particles_.velocity[i]);
         force_[i] = Fdrag + Fcoupled_[i] + Fparticle_[i];
     }
+    checkForcesFinite();
 
     // Exchange fields with the same weights, and the momentum balance
     exchange_.update
@@ -389,7 +391,49 @@ void Foam::demCloud::computeForces
         velocityById_.set(particles_.id[i], particles_.velocity[i]);
     }
 
-    io_.writeSummary(particles_, force_, weights_.nOutside(), exchange_);
+    io_.writeSummary
+    (
+        particles_, force_, weights_.nOutside(), exchange_,
+        weights_.maxCompletion()
+    );
+}
+
+
+void Foam::demCloud::checkForcesFinite() const
+{
+    // Every rank holds every force after the sums: all stop together
+    auto finite = [](const vector& v)
+    {
+        return std::isfinite(v.x()) && std::isfinite(v.y())
+            && std::isfinite(v.z());
+    };
+    forAll(force_, i)
+    {
+        if (finite(force_[i]) && std::isfinite(beta_[i]))
+        {
+            continue;
+        }
+        wordList models;
+        for (const forceModel& m : forces_)
+        {
+            models.append(m.type());
+        }
+        FatalErrorInFunction
+            << "Non-finite fluid force on particle " << particles_.id[i]
+            << " (type " << particles_.type[i] << ") at t = "
+            << mesh_.time().value() << " s" << nl
+            << "    position " << particles_.position[i]
+            << ", velocity " << particles_.velocity[i]
+            << ", fluid velocity there " << Uf_[i] << nl
+            << "    drag coefficient beta " << beta_[i]
+            << " kg/s, coupled force " << Fcoupled_[i]
+            << " N, particle-only force " << Fparticle_[i] << " N" << nl
+            << "    force models " << models
+            << " (constant/couplingProperties); usual causes: a fluid"
+            << " that has blown up (Courant number), a particle outside"
+            << " the mesh, or a void fraction of 0"
+            << exit(FatalError);
+    }
 }
 
 
@@ -438,21 +482,18 @@ void Foam::demCloud::evolve
     const scalar t3 = io_.elapsedTime();
     io_.addTimes(t1 - t0, t2 - t1, t3 - t2);
 
-    Info<< "demCloud: " << particles_.size() << " particles";
-    if (weights_.nOutside())
-    {
-        Info<< " (" << weights_.nOutside() << " outside the mesh)";
-    }
-    Info<< ", voidfraction min "
+    // One line of "name value" pairs per step (foamLog, grep; cumulative
+    // CPU seconds of the three parts); the momentum exchange, its
+    // balance and the weight completion per step are in
+    // postProcessing/demCloud/<t0>/summary.dat
+    Info<< "demCloud: particles " << particles_.size()
+        << " outsideMesh " << weights_.nOutside()
+        << " voidfractionMin "
         << gMin(exchange_.voidfraction().primitiveField())
-        << ", momentum exchange: particles " << exchange_.particleMomentum()
-        << " fluid " << exchange_.fluidMomentum() << nl
-        << "demCloud: void-fraction weights completed in the centre cells by"
-        << " at most " << weights_.maxCompletion() << " (max |1 - sum w|)"
-        << nl
-        << "demCloud: cumulative CPU s: DEM " << io_.timeDem()
-        << ", locate+voidfraction " << io_.timeParticles()
-        << ", forces+exchange " << io_.timeForces() << endl;
+        << " exchangeBalance " << exchange_.balanceError()
+        << " cpuDEM " << io_.timeDem()
+        << " cpuLocateVoidfraction " << io_.timeParticles()
+        << " cpuForcesExchange " << io_.timeForces() << endl;
 }
 
 

@@ -37,7 +37,8 @@ void Foam::demCloudIO::openSummary()
         << " particles [N]) Pcx Pcy Pcz (coupled force on particles)"
         << " Sfx Sfy Sfz (exchange source in the fluid) relErr"
         << " Upx Upy Upz (mean particle velocity) xpx xpy xpz"
-        << " (mean position) alphaMin" << nl;
+        << " (mean position) alphaMin weightCompletion (max |1 - sum w|"
+        << " put in the centre cells)" << nl;
     summary_().precision(12);
 }
 
@@ -47,7 +48,8 @@ void Foam::demCloudIO::writeSummary
     const demParticleArrays& particles,
     const List<vector>& force,
     const label nOutside,
-    const demExchangeFields& exchange
+    const demExchangeFields& exchange,
+    const scalar weightCompletion
 )
 {
     if (!Pstream::master())
@@ -78,7 +80,8 @@ void Foam::demCloudIO::writeSummary
         << exchange.balanceError() << ' '
         << Up.x() << ' ' << Up.y() << ' ' << Up.z() << ' '
         << xp.x() << ' ' << xp.y() << ' ' << xp.z() << ' '
-        << min(exchange.voidfraction().primitiveField()) << nl;
+        << min(exchange.voidfraction().primitiveField()) << ' '
+        << weightCompletion << nl;
     os.flush();
 }
 

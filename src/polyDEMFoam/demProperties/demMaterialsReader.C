@@ -129,13 +129,44 @@ void Foam::demMaterialsReader::readInteractions
         {
             p.twistingFriction = pd.getOrDefault<scalar>("twistingFriction", 0);
         }
-        if (!(p.twistingFriction >= 0) || !std::isfinite(p.twistingFriction))
+        // Ranges checked here, where the pair's own entry is known: the
+        // engine's own check can only name "interactions/restitution"
+        const std::string where = "interactions/" + pd.dictName();
+        auto refuse = [&](const char* key, scalar value, const char* range)
         {
             FatalIOErrorInFunction(pd)
-                << "Entry 'twistingFriction' of " << pd.dictName()
-                << " must be a finite number >= 0 (the twisting resistance "
-                << "coefficient mu_t, M = mu_t R* Fn), got " << p.twistingFriction
-                << " in " << dict.name() << nl << exit(FatalIOError);
+                << "Entry '" << where.c_str() << '/' << key << "' of "
+                << dict.name() << " must be " << range << ", got " << value
+                << nl << exit(FatalIOError);
+        };
+        if (!(p.restitution > 0 && p.restitution <= 1))
+        {
+            refuse("restitution", p.restitution, "in (0, 1]");
+        }
+        if (!(p.friction >= 0) || !std::isfinite(p.friction))
+        {
+            refuse("friction", p.friction, "a finite number >= 0");
+        }
+        if (!(p.rollingFriction >= 0) || !std::isfinite(p.rollingFriction))
+        {
+            refuse("rollingFriction", p.rollingFriction, "a finite number >= 0");
+        }
+        if (!(p.rollingDamping >= 0 && p.rollingDamping <= 1))
+        {
+            refuse
+            (
+                "rollingDamping", p.rollingDamping,
+                "in [0, 1] (a fraction of the critical damping)"
+            );
+        }
+        if (!(p.twistingFriction >= 0) || !std::isfinite(p.twistingFriction))
+        {
+            refuse
+            (
+                "twistingFriction", p.twistingFriction,
+                "a finite number >= 0 (the twisting resistance coefficient"
+                " mu_t, M = mu_t R* Fn)"
+            );
         }
     };
 

@@ -334,6 +334,11 @@ std::vector<polydem::ConvexShape> Foam::demShapesReader::readGeometry
 
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
 
+//- Psi = pi^(1/3) (6V)^(2/3) / A of a 39:39:1 square plate is 0.20: flatter
+//  ice plates than that are floes, not brash-ice blocks or grains
+const Foam::scalar Foam::demShapesReader::minSphericity = 0.2;
+
+
 std::vector<Foam::demShapesReader::userType> Foam::demShapesReader::read
 (
     const dictionary& dict,
@@ -403,6 +408,23 @@ std::vector<Foam::demShapesReader::userType> Foam::demShapesReader::read
                     << s.nFaces() << " faces, d_eq " << s.equivalentDiameter
                     << " m, bounding diameter " << 2*s.boundingRadius
                     << " m, sphericity " << s.sphericity << endl;
+                // A sliver (a 4-point rock, a degenerate hull) has no
+                // stable time step and a volumetric overlap that jumps
+                // with orientation: refuse it with its figure
+                if (!(s.sphericity >= minSphericity))
+                {
+                    FatalIOErrorInFunction(td)
+                        << "Particle type '" << e.keyword() << "' of "
+                        << dict.name() << ": shape " << s.name.c_str()
+                        << " has sphericity " << s.sphericity
+                        << ", below the floor " << minSphericity
+                        << " (that of a 39:39:1 square plate)" << nl
+                        << "    " << s.nVertices() << " vertices, "
+                        << s.nFaces() << " faces; check entry 'particleTypes/"
+                        << e.keyword() << "/geometry' (for type rock: more "
+                        << "points, or less extreme elongation and flatness)"
+                        << nl << exit(FatalIOError);
+                }
                 config.shapes.push_back(std::move(s));
                 config.types.push_back(t);
             }

@@ -15,6 +15,7 @@ Description
 #include "mathematicalConstants.H"
 
 #include "polyDEM/Insertion.hpp"
+#include "polyDEM/InsertionChecks.hpp"
 #include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/StateIO.hpp"
 
@@ -58,12 +59,55 @@ Foam::label Foam::demSimulation::computeStepsPerDeltaT() const
 {
     const scalar deltaT = runTime_.deltaTValue();
     const scalar dt = input_.config().timeStep;
+    const dictionary& dict = input_.dict();
+    const entry* e = dict.findEntry("timeStep", keyType::LITERAL);
+    if (!(deltaT > 0) || !std::isfinite(deltaT))
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            runTime_.controlDict().name(), -1
+        )
+            << "Entry 'deltaT' of " << runTime_.controlDict().name()
+            << " must be a positive time step [s], got " << deltaT << nl
+            << exit(FatalIOError);
+    }
     const scalar ratio = deltaT/dt;
+    // A DEM step far below the fluid step is a units slip (1e-12 for
+    // 1e-5), not a divisibility problem: say so before the rounding test
+    const scalar maxStepsPerDeltaT = 1e8;
+    if (ratio > maxStepsPerDeltaT)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            dict.name(), e ? e->startLineNumber() : -1
+        )
+            << "The DEM time step (entry 'timeStep' " << dt << " s of "
+            << dict.name() << ")" << nl
+            << "    would take " << ratio << " DEM steps per controlDict"
+            << " deltaT " << deltaT << " s (more than "
+            << maxStepsPerDeltaT << ")" << nl
+            << "    check the units; the largest stable step is a fraction"
+            << " of the contact time (docs/demProperties.md)" << nl
+            << exit(FatalIOError);
+    }
+    if (ratio < 1 - 1e-9)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            dict.name(), e ? e->startLineNumber() : -1
+        )
+            << "The DEM time step (entry 'timeStep' " << dt << " s of "
+            << dict.name() << ")" << nl
+            << "    is larger than the controlDict deltaT " << deltaT
+            << " s: the fluid step must hold a whole number (>= 1) of DEM"
+            << " steps" << nl << exit(FatalIOError);
+    }
     const label n = label(std::llround(ratio));
     if (n < 1 || mag(n*dt - deltaT) > 1e-9*deltaT)
     {
-        const dictionary& dict = input_.dict();
-        const entry* e = dict.findEntry("timeStep", keyType::LITERAL);
         FatalIOError
         (
             FUNCTION_NAME, __FILE__, __LINE__,
@@ -255,6 +299,79 @@ void Foam::demSimulation::checkInsertedMotion
 }
 
 
+void Foam::demSimulation::checkInsertedOverlaps
+(
+    const polydem::ParticleState& p,
+    const polydem::ParticleState& present,
+    const std::string& insertionName,
+    const bool listed
+) const
+{
+    const std::vector<polydem::InsertionOverlap> found =
+        polydem::insertionOverlaps
+        (
+            system_->config(), p, present, system_->engine().step() == 0
+        );
+    if (found.empty())
+    {
+        return;
+    }
+    const std::string base = "insertion/" + insertionName;
+    auto name = [&](size_t i)
+    {
+        return listed
+            ? base + "/particles[" + std::to_string(i) + "]"
+            : "particle " + std::to_string(p.id[i]) + " of " + base;
+    };
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << found.size() << " overlap(s) of inserted particles beyond the"
+        << " tolerance (depth " << 100*polydem::kInsertionDepthTolerance
+        << " % of the smaller diameter for spheres, volume "
+        << 100*polydem::kInsertionVolumeTolerance << " % of the smaller"
+        << " particle with a polyhedron):";
+    const size_t nShow = std::min<size_t>(found.size(), 5);
+    for (size_t k = 0; k < nShow; ++k)
+    {
+        const polydem::InsertionOverlap& o = found[k];
+        msg << "\n    " << name(o.particle);
+        if (o.behindWall)
+        {
+            msg << ": centre on or behind plane wall '" << o.wall << "'";
+            continue;
+        }
+        switch (o.partner)
+        {
+            case polydem::InsertionOverlap::Partner::inserted:
+                msg << " and " << name(o.otherIndex);
+                break;
+            case polydem::InsertionOverlap::Partner::present:
+                msg << " and particle " << o.otherId << " already present";
+                break;
+            case polydem::InsertionOverlap::Partner::wall:
+                msg << " and wall '" << o.wall << "'";
+                break;
+        }
+        msg << ": overlap " << (o.byVolume ? "volume " : "depth ")
+            << 100*o.measure << " %";
+    }
+    if (found.size() > nShow)
+    {
+        msg << "\n    ... and " << found.size() - nShow << " more";
+    }
+    msg << "\n    (overlapping particles are pushed apart by their stored"
+        << " elastic energy; two spheres at one point never interact)";
+    const polydem::InsertionOverlap& first = found.front();
+    throw polydem::Error
+    (
+        msg.str(), input_.dict().name(),
+        listed
+      ? base + "/particles[" + std::to_string(first.particle) + "]/position"
+      : base + "/region"
+    );
+}
+
+
 polydem::ParticleState Foam::demSimulation::insert
 (
     size_t k,
@@ -271,6 +388,7 @@ polydem::ParticleState Foam::demSimulation::insert
         polydem::ParticleState p =
             polydem::insertList(*system_, types, ins.particles, firstId);
         checkInsertedMotion(p, "insertion/" + ins.name + "/particles", true);
+        checkInsertedOverlaps(p, obstacles, ins.name, true);
         Info<< "DEM insertion '" << ins.name << "': " << label(p.size())
             << (ut.polyhedron ? " polyhedra" : " spheres") << " (list)" << endl;
         return p;
@@ -304,6 +422,7 @@ polydem::ParticleState Foam::demSimulation::insert
     (
         added.particles, "insertion/" + ins.name + "/velocity", false
     );
+    checkInsertedOverlaps(added.particles, obstacles, ins.name, false);
     Info<< "DEM insertion '" << ins.name << "': " << label(added.particles.size())
         << (ut.polyhedron ? " polyhedra" : " spheres")
         << ", solid fraction of the region "
@@ -782,6 +901,8 @@ Foam::demSimulation::demSimulation
     wallMap_(),
     insertionDone_(input_.insertions().size(), false),
     stepsPerDeltaT_(computeStepsPerDeltaT()),
+    lastEvolveTime_(runTime_.value()),
+    stepCarry_(0),
     stateCache_(),
     stateCacheStep_(-1),
     wallLoadsRequested_(false),
@@ -821,7 +942,12 @@ Foam::demSimulation::demSimulation
         polydem::StateFileInfo info;
         polydem::Snapshot state = polydem::readSnapshot(statePath, &info);
         checkState(statePath, info, state);
-        if (mag(state.time - runTime_.value()) > 1e-6*runTime_.deltaTValue())
+        // (an adjusted deltaT with no particles yet: within half a step)
+        if
+        (
+            mag(state.time - runTime_.value())
+          > 0.5*input_.config().timeStep + 1e-6*runTime_.deltaTValue()
+        )
         {
             WarningInFunction
                 << "The state in " << statePath << " is at t = " << state.time
@@ -947,6 +1073,7 @@ Foam::demSimulation::demSimulation
     lastReportWall_ = wallStart_;
     lastReportStep_ = system_->engine().step();
     startStep_ = lastReportStep_;
+    lastEvolveTime_ = runTime_.value();
     sample();
 }
 
@@ -961,7 +1088,44 @@ void Foam::demSimulation::evolve()
     wallLoadMean_.assign(wallMap_.size(), polydem::WallLoad());
     wallLoadSteps_ = 0;
 
-    const int64_t target = system_->engine().step() + stepsPerDeltaT_;
+    // DEM steps for this fluid step: stepsPerDeltaT_ with a fixed deltaT
+    // (checked at the start); a solver that adjusts deltaT
+    // (demBackend::compatibleDeltaT) keeps it a whole number of them
+    // while there are particles, and with none the DEM follows the
+    // OpenFOAM time to within half a step
+    const scalar dt = input_.config().timeStep;
+    const scalar increment = (runTime_.value() - lastEvolveTime_)/dt;
+    lastEvolveTime_ = runTime_.value();
+    int64_t nSteps = stepsPerDeltaT_;
+    if (mag(increment - stepsPerDeltaT_) > 1e-6*stepsPerDeltaT_)
+    {
+        if
+        (
+            mag(increment - std::llround(increment)) > 1e-6
+         && system_->engine().statistics().particles > 0
+        )
+        {
+            FatalErrorInFunction
+                << "The fluid time step to t = " << runTime_.value()
+                << " s is " << increment << " DEM steps (timeStep " << dt
+                << " s), not a whole number" << nl
+                << "    deltaT was changed during the run (controlDict"
+                << " edited, or a solver without DEM-aware time-step"
+                << " control); keep it a multiple of timeStep"
+                << exit(FatalError);
+        }
+        const scalar steps = increment + stepCarry_;
+        nSteps = std::llround(steps);
+        stepCarry_ = steps - nSteps;
+    }
+    if (nSteps < 0)
+    {
+        FatalErrorInFunction
+            << "The OpenFOAM time " << runTime_.value() << " s went back"
+            << " behind the DEM time " << system_->engine().time() << " s"
+            << exit(FatalError);
+    }
+    const int64_t target = system_->engine().step() + nSteps;
     while (system_->engine().step() < target)
     {
         const int64_t step = system_->engine().step();
@@ -992,6 +1156,69 @@ void Foam::demSimulation::sample()
         << label(s.wallContacts) << ' ' << label(s.particlesInContact) << ' '
         << e.kinetic() << ' ' << e.translational << ' ' << e.rotational << ' '
         << e.gravitational << ' ' << s.maxOverlapRatio << endl;
+    checkOverlap(s);
+}
+
+
+void Foam::demSimulation::checkOverlap(const polydem::Statistics& s) const
+{
+    // Overlaps of sphere laws are a few per cent of the radius at most; one
+    // of a third of the radius means particles are passing through each
+    // other (time step or stiffness): name the pair (the host search runs
+    // only then). The overlap-volume law reports no ratio: not covered.
+    const double limit = 1.0/3.0;
+    if (!(s.maxOverlapRatio > limit) && std::isfinite(s.maxOverlapRatio))
+    {
+        return;
+    }
+    const polydem::ParticleState p = system_->engine().particles();
+    const std::vector<polydem::InsertionOverlap> found =
+        polydem::insertionOverlaps
+        (
+            system_->config(), p, polydem::ParticleState(), false
+        );
+    const polydem::InsertionOverlap* worst = nullptr;
+    for (const auto& o : found)
+    {
+        if (!worst || o.measure > worst->measure)
+        {
+            worst = &o;
+        }
+    }
+    FatalErrorInFunction
+        << "DEM overlap of " << s.maxOverlapRatio << " of a radius at t = "
+        << system_->engine().time() << " s (more than " << limit
+        << "): particles are passing through each other" << nl;
+    if (worst)
+    {
+        const size_t i = worst->particle;
+        FatalError
+            << "    particle " << label(p.id[i]) << " (type "
+            << input_.config().types[p.type[i]].name.c_str() << ") at ("
+            << p.position[i].x << ' ' << p.position[i].y << ' '
+            << p.position[i].z << "), velocity (" << p.velocity[i].x << ' '
+            << p.velocity[i].y << ' ' << p.velocity[i].z << ")";
+        if (worst->partner == polydem::InsertionOverlap::Partner::wall)
+        {
+            FatalError<< " and wall '" << worst->wall.c_str() << "'";
+        }
+        else
+        {
+            const size_t j = worst->otherIndex;
+            FatalError
+                << " and particle " << label(p.id[j]) << " at ("
+                << p.position[j].x << ' ' << p.position[j].y << ' '
+                << p.position[j].z << "), velocity (" << p.velocity[j].x
+                << ' ' << p.velocity[j].y << ' ' << p.velocity[j].z << ")";
+        }
+        FatalError<< ": depth " << 2*worst->measure << " of the smaller"
+            << " radius" << nl;
+    }
+    FatalError
+        << "    usual causes: a time step too large for the stiffness"
+        << " (entry 'timeStep' of " << input_.dict().name() << "), a soft"
+        << " material under a large load, or particles inserted overlapping"
+        << exit(FatalError);
 }
 
 
@@ -1024,17 +1251,19 @@ void Foam::demSimulation::report(bool force)
     const scalar left = runTime_.endTime().value() - runTime_.value();
     const scalar eta = done > 0 ? left/done*(now - wallStart_) : -1;
 
-    Info<< "DEM t = " << engine.time() << " s"
-        << "  step " << label(engine.step())
-        << "  " << label(std::lround(stepRate)) << " steps/s"
-        << "  " << stepRate*s.particles << " particle-steps/s" << nl
-        << "    particles " << label(s.particles)
-        << "  in contact " << label(s.particlesInContact)
-        << "  contacts " << label(s.contacts)
-        << " (+" << label(s.wallContacts) << " with walls)"
-        << "  kinetic energy " << e.kinetic() << " J"
-        << "  wall time " << hms(now - wallStart_).c_str()
-        << "  left " << hms(eta).c_str() << endl;
+    // One line of "name value" pairs: foamLog (docs/demProperties.md,
+    // "Log") and grep pick each quantity by its name
+    Info<< "DEM t = " << engine.time()
+        << " step " << label(engine.step())
+        << " particles " << label(s.particles)
+        << " inContact " << label(s.particlesInContact)
+        << " contacts " << label(s.contacts)
+        << " wallContacts " << label(s.wallContacts)
+        << " kineticEnergy " << e.kinetic()
+        << " stepsPerSecond " << label(std::lround(stepRate))
+        << " particleStepsPerSecond " << stepRate*s.particles
+        << " wallTime " << hms(now - wallStart_).c_str()
+        << " left " << hms(eta).c_str() << endl;
 
     lastReportWall_ = now;
     lastReportStep_ = engine.step();

@@ -2,6 +2,7 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "Map.H"
+#include <cmath>
 #include <fstream>
 
 namespace Foam
@@ -101,6 +102,66 @@ Foam::autoPtr<Foam::demBackend> Foam::demBackend::New
     (
         cstrIter()(modelType, runTime, dict)
     );
+}
+
+
+Foam::scalar Foam::demBackend::compatibleDeltaT
+(
+    const Time& runTime,
+    const scalar wanted,
+    const scalar demStep
+)
+{
+    if (!(demStep > 0))
+    {
+        return wanted;
+    }
+    label k = max(label(1), label(std::floor(wanted/demStep*(1 + 1e-12))));
+
+    const word writeControl
+    (
+        runTime.controlDict().getOrDefault<word>("writeControl", "timeStep")
+    );
+    if (writeControl == "adjustableRunTime" || writeControl == "adjustable")
+    {
+        const scalar interval =
+            runTime.controlDict().get<scalar>("writeInterval");
+        const scalar t = runTime.value() - runTime.startTime().value();
+        // The next write time after t (a time within 1e-9 of the interval
+        // is the write just done)
+        const scalar nextWrite =
+            (std::floor(t/interval + 1e-9) + 1)*interval;
+        const label nDem = label(std::llround((nextWrite - t)/demStep));
+        if (nDem >= 1)
+        {
+            // m fluid steps of at most k DEM steps reach the write time;
+            // the steps are made as even as whole DEM steps allow
+            const label m = (nDem + k - 1)/k;
+            k = (nDem + m - 1)/m;
+        }
+    }
+    return k*demStep;
+}
+
+
+void Foam::demBackend::refuseAdjustTimeStep
+(
+    const Time& runTime,
+    const word& solver
+)
+{
+    const dictionary& cd = runTime.controlDict();
+    if (cd.getOrDefault<bool>("adjustTimeStep", false))
+    {
+        FatalIOErrorInFunction(cd)
+            << "Entry 'adjustTimeStep' of " << cd.name() << " is yes, but "
+            << solver << " runs with the fixed deltaT" << nl
+            << "    (it has no Courant-number control; deltaT must stay a"
+            << " whole number of DEM steps): set adjustTimeStep no and"
+            << " choose deltaT" << nl
+            << "    for the Courant number (demInterFoam adjusts its step)"
+            << exit(FatalIOError);
+    }
 }
 
 

@@ -1,5 +1,7 @@
 #include "fixedBackend.H"
 #include "addToRunTimeSelectionTable.H"
+#include "demPropertiesErrors.H"
+#include <string>
 
 namespace Foam
 {
@@ -23,6 +25,11 @@ Foam::fixedBackend::fixedBackend
     forAll(list, i)
     {
         const dictionary& d = list[i];
+        demPropertiesErrors::checkKeys
+        (
+            dict, d, "bodies[" + std::to_string(i) + "]",
+            {"shape", "radius", "position", "velocity", "omega"}
+        );
         const word shape(d.get<word>("shape"));
         if (shape != "sphere")
         {

@@ -106,10 +106,35 @@ Foam::directForcingIB::directForcingIB
     ),
     solidVolume_(0)
 {
-    if (nSub_ < 1)
+    if (nSub_ < 1 || nSub_ > maxSubSamples)
     {
         FatalIOErrorInFunction(dict)
-            << "nSubSamples must be >= 1, not " << nSub_ << exit(FatalIOError);
+            << "Entry 'nSubSamples' of " << dict.name() << " must be in [1, "
+            << maxSubSamples << "], not " << nSub_ << nl
+            << "    (n^3 samples per interface cell: 4 is the default, 8 is"
+            << " fine; more costs n^3 and gains 1/n^2)" << exit(FatalIOError);
+    }
+    if (nCorrections_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'nCorrections' of " << dict.name()
+            << " must be >= 1 (forcing-pressure corrections per step), not "
+            << nCorrections_ << exit(FatalIOError);
+    }
+    if (!(integralThreshold_ > 0 && integralThreshold_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'integralThreshold' of " << dict.name()
+            << " must be in (0, 1] (the solid fraction from which a cell is"
+            << " forced to the body velocity), not " << integralThreshold_
+            << exit(FatalIOError);
+    }
+    if (!(minCrossing_ > 0 && minCrossing_ < 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'minCrossing' of " << dict.name()
+            << " must be in (0, 0.5) (a fraction of the cell-centre"
+            << " distance), not " << minCrossing_ << exit(FatalIOError);
     }
     if
     (

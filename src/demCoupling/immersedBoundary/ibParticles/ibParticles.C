@@ -6,6 +6,12 @@
 #include "Time.H"
 #include "mathematicalConstants.H"
 #include "polyDEMConversions.H"
+#include "directForcingIB.H"
+#include "ibRefinementIndicator.H"
+#include "ibLubrication.H"
+#include "boundBox.H"
+#include <cmath>
+#include "demPropertiesErrors.H"
 
 
 Foam::dictionary Foam::ibParticles::backendSelection() const
@@ -73,7 +79,54 @@ void Foam::ibParticles::readBodies()
 }
 
 
-Foam::ibParticles::ibParticles(const fvMesh& mesh, const word& dictName)
+Foam::wordList Foam::ibParticles::dictKeys()
+{
+    return wordList
+    ({
+        "demBackend", "motion", "internalInertia", "internalFluid",
+        "directForcing", "lubrication", "refinement"
+    });
+}
+
+
+void Foam::ibParticles::checkEntries(const wordList& solverKeys) const
+{
+    DynamicList<word> valid(dictKeys());
+    valid.append(solverKeys);
+    if (backend_)
+    {
+        valid.append(backend_->dictKeys());
+    }
+    demPropertiesErrors::checkKeys(dict_, dict_, "", valid);
+
+    auto checkSub = [&](const word& key, const wordList& keys)
+    {
+        const entry* e = dict_.findEntry(key, keyType::LITERAL);
+        if (!e)
+        {
+            return;
+        }
+        if (!e->isDict())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry '" << key << "' of " << dict_.name()
+                << " must be a dictionary; valid entries: " << keys
+                << exit(FatalIOError);
+        }
+        demPropertiesErrors::checkKeys(dict_, e->dict(), key, keys);
+    };
+    checkSub("directForcing", directForcingIB::dictKeys());
+    checkSub("lubrication", ibLubrication::dictKeys());
+    checkSub("refinement", ibRefinementIndicator::dictKeys());
+}
+
+
+Foam::ibParticles::ibParticles
+(
+    const fvMesh& mesh,
+    const word& dictName,
+    const wordList& solverKeys
+)
 :
     mesh_(mesh),
     dict_
@@ -94,6 +147,7 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh, const word& dictName)
       : word("none")
     ),
     g_(Zero),
+    demTimeStep_(0),
     started_(false)
 {
     if
@@ -117,15 +171,19 @@ Foam::ibParticles::ibParticles(const fvMesh& mesh, const word& dictName)
     {
         backend_ = demBackend::New(mesh.time(), selection);
         g_ = backend_->gravity();
+        demTimeStep_ = backend_->timeStep();
         shapes_.setSize(backend_->typeNames().size());
         forAll(shapes_, t)
         {
             backend_->typePolyhedron(t, shapes_[t]);
         }
         readBodies();
+        checkEntries(solverKeys);
     }
     Pstream::scatter(g_);
+    Pstream::scatter(demTimeStep_);
     scatterBodies(bodies_);
+    checkInsideMesh();
 
     previousVelocity_.setSize(bodies_.size());
     forAll(bodies_, i)
@@ -163,6 +221,7 @@ void Foam::ibParticles::evolve
     const List<vector>& L
 )
 {
+    checkForcesFinite(F, T);
     const scalar dt = mesh_.time().deltaTValue();
     List<vector> force(F.size()), torque(T.size());
     forAll(F, i)
@@ -211,6 +270,7 @@ void Foam::ibParticles::evolve
     const List<vector>& Lnext
 )
 {
+    checkForcesFinite(F, T);
     const scalar dt = mesh_.time().deltaTValue();
     List<vector> force(F.size()), torque(T.size());
     forAll(F, i)
@@ -280,6 +340,7 @@ void Foam::ibParticles::advance
         readBodies();
     }
     scatterBodies(bodies_);
+    checkInsideMesh();
     previousVelocity_.setSize(bodies_.size());
     forAll(bodies_, i)
     {
@@ -287,6 +348,62 @@ void Foam::ibParticles::advance
             oldU.lookup(bodies_[i].id, bodies_[i].velocity);
     }
     updateLubrication();
+}
+
+
+void Foam::ibParticles::checkInsideMesh() const
+{
+    // A body whose centre has left the fluid mesh feels no fluid at all:
+    // stop, naming it (every rank holds every body; reduce the search)
+    forAll(bodies_, i)
+    {
+        const ibBody& b = bodies_[i];
+        bool inside = (mesh_.findCell(b.position) >= 0);
+        reduce(inside, orOp<bool>());
+        if (!inside)
+        {
+            const boundBox bb(mesh_.points(), true);
+            FatalErrorInFunction
+                << "Body " << b.id << " has left the fluid mesh at t = "
+                << mesh_.time().value() << " s: centre " << b.position
+                << ", velocity " << b.velocity << ", angular velocity "
+                << b.omega << nl
+                << "    mesh bounds " << bb << nl
+                << "    (bodies must stay inside the fluid domain: a DEM wall"
+                << " at the mesh boundary keeps them in; or the time step"
+                << " is too large)" << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::ibParticles::checkForcesFinite
+(
+    const List<vector>& F,
+    const List<vector>& T
+) const
+{
+    auto finite = [](const vector& v)
+    {
+        return std::isfinite(v.x()) && std::isfinite(v.y())
+            && std::isfinite(v.z());
+    };
+    forAll(F, i)
+    {
+        if (finite(F[i]) && finite(T[i]))
+        {
+            continue;
+        }
+        const ibBody& b = bodies_[i];
+        FatalErrorInFunction
+            << "Non-finite fluid force on body " << b.id << " at t = "
+            << mesh_.time().value() << " s: force " << F[i]
+            << " N, torque " << T[i] << " N m" << nl
+            << "    centre " << b.position << ", velocity " << b.velocity
+            << ", angular velocity " << b.omega << nl
+            << "    (the fluid has blown up: check the Courant number and"
+            << " the body's velocity)" << exit(FatalError);
+    }
 }
 
 

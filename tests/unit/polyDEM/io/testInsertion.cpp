@@ -2,9 +2,13 @@
 // the ones listed; a random fill places N non-overlapping particles inside
 // its region, clear of the particles present, the same bits for the same
 // seed; polyhedra get one of their shapes and a unit orientation; and
-// System::addParticles refuses particles the time step cannot resolve.
+// System::addParticles refuses particles the time step cannot resolve; and
+// insertionOverlaps finds listed particles that overlap each other, the
+// particles present or a wall (against exact geometry: depths of spheres,
+// the overlap volume of cubes known by hand).
 #include "polyDEM/Error.hpp"
 #include "polyDEM/Insertion.hpp"
+#include "polyDEM/InsertionChecks.hpp"
 #include "polyDEM/System.hpp"
 
 #include "ShapeGenerators.hpp"
@@ -293,4 +297,142 @@ TEST(Insertion, addParticlesChecksTheContactStability)
     stable.initialise(empty);
     stable.addParticles(p, "the particles of insertion 'release'");
     EXPECT_EQ(stable.engine().particles().size(), p.size());
+}
+
+
+namespace
+{
+
+ParticleState listed(const System& system, const InsertionTypes& types,
+                     const std::vector<std::pair<Vec3, int>>& at, double radius = 0)
+{
+    std::vector<ListedParticle> list(at.size());
+    for (std::size_t i = 0; i < at.size(); ++i)
+    {
+        list[i].position = at[i].first;
+        list[i].type = at[i].second;
+        list[i].radius = radius > 0 ? radius : system.config().types[at[i].second].radius;
+    }
+    return insertList(system, types, list, 0);
+}
+
+} // namespace
+
+
+TEST(InsertionOverlaps, spheresByDepth)
+{
+    SimulationConfig c = config();
+    const System system(c);
+    // d = 4 mm: centres 3.96 mm apart overlap by 1 % of d (the tolerance),
+    // 3.9 mm apart by 2.5 %, one point by 100 %
+    const ParticleState clear = listed(system, spheres(), {{Vec3(0, 0, 0), 0}, {Vec3(0.00397, 0, 0), 0}});
+    EXPECT_TRUE(insertionOverlaps(c, clear, ParticleState(), true).empty());
+
+    const ParticleState deep = listed(system, spheres(), {{Vec3(0, 0, 0), 0}, {Vec3(0.0039, 0, 0), 0}});
+    const auto o = insertionOverlaps(c, deep, ParticleState(), true);
+    ASSERT_EQ(o.size(), 1u);
+    EXPECT_EQ(o[0].particle, 0u);
+    EXPECT_EQ(o[0].otherIndex, 1u);
+    EXPECT_NEAR(o[0].measure, 0.1e-3 / 4e-3, 1e-12);
+    EXPECT_FALSE(o[0].byVolume);
+
+    const ParticleState same = listed(system, spheres(), {{Vec3(0.01, 0, 0), 0}, {Vec3(0.01, 0, 0), 0}});
+    const auto s = insertionOverlaps(c, same, ParticleState(), true);
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_NEAR(s[0].measure, 1.0, 1e-12);
+
+    // Against a particle already present (its id is named)
+    ParticleState present = listed(system, spheres(), {{Vec3(0, 0, 0.0035), 0}});
+    present.id[0] = 77;
+    const auto q = insertionOverlaps(c, clear, present, true);
+    ASSERT_EQ(q.size(), 1u);
+    EXPECT_EQ(q[0].partner, InsertionOverlap::Partner::present);
+    EXPECT_EQ(q[0].otherId, 77);
+}
+
+
+TEST(InsertionOverlaps, cubesByVolume)
+{
+    SimulationConfig c = config();
+    const System system(c);
+    // Two 4 mm cubes face to face exactly touching: clear; 0.4 mm closer
+    // they share a 4 x 4 x 0.4 mm slab, 10 % of a cube's volume
+    const ParticleState touch = listed(system, cubes(), {{Vec3(0, 0, 0), 2}, {Vec3(0.004, 0, 0), 2}});
+    EXPECT_TRUE(insertionOverlaps(c, touch, ParticleState(), true).empty());
+    const ParticleState deep = listed(system, cubes(), {{Vec3(0, 0, 0), 2}, {Vec3(0.0036, 0, 0), 2}});
+    const auto o = insertionOverlaps(c, deep, ParticleState(), true);
+    ASSERT_EQ(o.size(), 1u);
+    EXPECT_TRUE(o[0].byVolume);
+    EXPECT_NEAR(o[0].measure, 0.1, 1e-9);
+}
+
+
+TEST(InsertionOverlaps, walls)
+{
+    SimulationConfig c = config();
+    PlaneWall floor;
+    floor.name = "floor";
+    floor.point = Vec3(0, 0, 0);
+    floor.normal = Vec3(0, 0, 1);
+    c.planes.push_back(floor);
+    const System system(c);
+
+    // A cube resting on the floor: clear; centre below the floor: refused
+    const ParticleState resting = listed(system, cubes(), {{Vec3(0, 0, 0.002), 2}});
+    EXPECT_TRUE(insertionOverlaps(c, resting, ParticleState(), true).empty());
+    const ParticleState below = listed(system, cubes(), {{Vec3(0, 0, -0.001), 2}});
+    const auto b = insertionOverlaps(c, below, ParticleState(), true);
+    ASSERT_EQ(b.size(), 1u);
+    EXPECT_TRUE(b[0].behindWall);
+    EXPECT_EQ(b[0].wall, "floor");
+
+    // A cube sunk 1 mm into it: a quarter of its volume
+    const ParticleState sunk = listed(system, cubes(), {{Vec3(0, 0, 0.001), 2}});
+    const auto v = insertionOverlaps(c, sunk, ParticleState(), true);
+    ASSERT_EQ(v.size(), 1u);
+    EXPECT_NEAR(v[0].measure, 0.25, 1e-9);
+
+    // A sphere 0.2 mm into it: 5 % of its diameter
+    const ParticleState bead = listed(system, spheres(), {{Vec3(0, 0, 0.0018), 0}});
+    const auto s = insertionOverlaps(c, bead, ParticleState(), true);
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_NEAR(s[0].measure, 0.05, 1e-9);
+}
+
+
+TEST(InsertionOverlaps, meshWalls)
+{
+    // A 1 m square floor of two triangles (counter-clockwise seen from +z,
+    // the particles' side) and the same floor as 2 x 40 x 40 small ones:
+    // both must give the exact sunk volume and depth
+    for (int n : {1, 40})
+    {
+        SimulationConfig c = config();
+        MeshWall w;
+        w.name = "tray";
+        const double h = 1.0 / n;
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; j <= n; ++j)
+                w.mesh.points.push_back(Vec3(-0.5 + i * h, -0.5 + j * h, 0));
+        auto id = [n](int i, int j) { return i * (n + 1) + j; };
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+            {
+                w.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+                w.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            }
+        c.meshes.push_back(w);
+        const System system(c);
+        const ParticleState clear = listed(system, cubes(), {{Vec3(0.01, 0.02, 0.002), 2}});
+        EXPECT_TRUE(insertionOverlaps(c, clear, ParticleState(), true).empty()) << n;
+        const ParticleState sunk = listed(system, cubes(), {{Vec3(0.01, 0.02, 0.001), 2}});
+        const auto v = insertionOverlaps(c, sunk, ParticleState(), true);
+        ASSERT_EQ(v.size(), 1u) << n;
+        EXPECT_EQ(v[0].wall, "tray");
+        EXPECT_NEAR(v[0].measure, 0.25, 1e-9) << n;
+        const ParticleState bead = listed(system, spheres(), {{Vec3(0.01, 0.02, 0.0018), 0}});
+        const auto s = insertionOverlaps(c, bead, ParticleState(), true);
+        ASSERT_EQ(s.size(), 1u) << n;
+        EXPECT_NEAR(s[0].measure, 0.05, 1e-9) << n;
+    }
 }
