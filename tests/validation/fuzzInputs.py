@@ -25,7 +25,7 @@ and extreme numbers (0, -1, -1e300, 1e300, 1e-300, and the value times
   demPimpleFoam one sphere in a 2x2x2 box (as validation.badInput)
   demIbFoam     one polyDEM sphere in a 6x6x6 box
 
-Usage: fuzzInputs.py [--shard K/N] [--cases N] [--seed S]
+Usage: fuzzInputs.py [--shard K/N] [--cases N (400)] [--seed S (2026)]
 The summary line gives the counts by outcome.
 """
 import argparse
@@ -42,7 +42,7 @@ import hedracase as hc
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CASES = os.path.join(HERE, "..", "cases")
-TIMEOUT = 60
+TIMEOUT = 30
 
 
 # --------------------------------------------------------------------------
@@ -242,12 +242,12 @@ def base_demPimpleFoam():
                       hc.random_fill("one", 3, (0.005, 0.005, 0.005), (0.015, 0.015, 0.015)))
     hc.coupling(case, """formulation setI;
 momentumCoupling implicit;
-fluidVelocity interpolated;
+fluidVelocity cell;
 locateModel hinted;
 voidFractionModel divided;
 dividedCoeffs { nShells 2; alphaMin 0.3; }
 smoothingModel none;
-forceModels (DiFelice pressureGradient viscousForce);
+forceModels (DiFelice pressureGradient viscousStress);
 DiFeliceCoeffs { alphaMax 1; }
 """)
     hc.run("blockMesh", case, "log.blockMesh")
@@ -335,7 +335,8 @@ def judge(base, mutated_dict, desc, mustFail, text, workroot, index):
     dictName = os.path.basename(mutated_dict)
     if rc < 0 or rc >= 128:
         return "signal", f"exit {rc}"
-    if "printStack" in out or "Segmentation fault" in out or "Floating point exception" in out:
+    # (not "Floating point exception": OpenFOAM's banner names the trap)
+    if "printStack" in out or "sigSegv" in out or "sigFpe::sigHandler" in out:
         return "signal", "stack trace in the log"
     if rc != 0:
         m = FATAL.search(out)
@@ -361,7 +362,7 @@ def judge(base, mutated_dict, desc, mustFail, text, workroot, index):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--shard", default="1/1")
-    ap.add_argument("--cases", type=int, default=240)
+    ap.add_argument("--cases", type=int, default=400)
     ap.add_argument("--seed", type=int, default=2026)
     args = ap.parse_args()
     shard, nShards = (int(x) for x in args.shard.split("/"))
@@ -406,6 +407,19 @@ def main():
     workroot = hc.workdir(f"fuzz-runs-{shard}")
     counts = {}
     failures = []
+    # The unmutated bases must run, or every verdict below means nothing
+    for b in sorted({p[0] for p in mine}):
+        bb = base(b)
+        d = bb["dicts"][0]
+        verdict, why = judge(bb, d, "unchanged", False,
+                             open(os.path.join(bb["case"], d)).read(), workroot, 999)
+        ok = verdict == "ran"
+        print(f"{'PASS' if ok else 'FAIL'}: [{bb['name']}] unchanged base case -> {verdict}"
+              + (f" ({why})" if why else ""), flush=True)
+        if not ok:
+            failures.append(f"base case {bb['name']} does not run: {verdict} ({why})")
+        else:
+            shutil.rmtree(os.path.join(workroot, f"{bb['name']}-999"), ignore_errors=True)
     for i, (b, d, desc, mustFail, tree) in enumerate(mine):
         bb = base(b)
         text = write(tree)

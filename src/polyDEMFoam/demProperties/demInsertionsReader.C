@@ -149,9 +149,19 @@ polydem::FillRegion Foam::demInsertionsReader::readRegion
     const label kind = demPropertiesErrors::selectName(rd, "type", kinds, "region type");
     if (kind == 0)
     {
+        const std::string at = "insertion/" + id.dictName() + "/region/";
         return polydem::FillRegion::box
         (
-            toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+            toVec3(demPropertiesErrors::boundedVector
+            (
+                dict, rd, "min", at + "min", demPropertiesErrors::maxMagnitude,
+                "a point (x y z) [m]"
+            )),
+            toVec3(demPropertiesErrors::boundedVector
+            (
+                dict, rd, "max", at + "max", demPropertiesErrors::maxMagnitude,
+                "a point (x y z) [m]"
+            ))
         );
     }
 
@@ -162,10 +172,20 @@ polydem::FillRegion Foam::demInsertionsReader::readRegion
     {
         if (rd.found("min", keyType::LITERAL) || rd.found("max", keyType::LITERAL))
         {
+            const std::string at = "insertion/" + id.dictName() + "/region/";
             return polydem::FillRegion::insideMesh
             (
                 std::move(mesh),
-                toVec3(rd.get<vector>("min")), toVec3(rd.get<vector>("max"))
+                toVec3(demPropertiesErrors::boundedVector
+                (
+                    dict, rd, "min", at + "min", demPropertiesErrors::maxMagnitude,
+                    "a point (x y z) [m]"
+                )),
+                toVec3(demPropertiesErrors::boundedVector
+                (
+                    dict, rd, "max", at + "max", demPropertiesErrors::maxMagnitude,
+                    "a point (x y z) [m]"
+                ))
             );
         }
         return polydem::FillRegion::insideMesh(std::move(mesh));
@@ -292,6 +312,16 @@ void Foam::demInsertionsReader::readParticleList
                     dict, id, path + "/" + key, what,
                     [&]() { v = pd.get<vector>(key); }
                 );
+                // Positions: 1e6 m (velocities and spins have their own
+                // check against the time step, checkInsertedMotion)
+                if (key == "position")
+                {
+                    demPropertiesErrors::boundedVector
+                    (
+                        dict, pd, key, path + "/" + key,
+                        demPropertiesErrors::maxMagnitude, what
+                    );
+                }
             }
             return v;
         };

@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "demPropertiesErrors.H"
+#include <cmath>
 #include "IOstreams.H"
 
 #include <algorithm>
@@ -82,6 +83,70 @@ Foam::label Foam::demPropertiesErrors::selectNameOrDefault
         return deflt;
     }
     return selectName(d, key, valid, what);
+}
+
+
+const Foam::scalar Foam::demPropertiesErrors::maxMagnitude = 1e6;
+
+
+Foam::vector Foam::demPropertiesErrors::boundedVector
+(
+    const dictionary& top,
+    const dictionary& d,
+    const word& key,
+    const std::string& path,
+    const scalar limit,
+    const char* what
+)
+{
+    const vector v(d.get<vector>(key));
+    for (label k = 0; k < 3; ++k)
+    {
+        if (!std::isfinite(v[k]) || mag(v[k]) > limit)
+        {
+            const entry* e = d.findEntry(key, keyType::LITERAL);
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                top.name(), e ? e->startLineNumber() : -1
+            )
+                << "Entry '" << path.c_str() << "' of " << top.name()
+                << " must be " << what << " with finite components of at"
+                << " most " << limit << " in magnitude, got " << v << nl
+                << exit(FatalIOError);
+        }
+    }
+    return v;
+}
+
+
+Foam::vector Foam::demPropertiesErrors::unitDirection
+(
+    const dictionary& top,
+    const dictionary& d,
+    const word& key,
+    const std::string& path
+)
+{
+    const vector v
+    (
+        boundedVector(top, d, key, path, maxMagnitude, "a direction (x y z)")
+    );
+    const scalar m = cmptMax(cmptMag(v));
+    if (!(m > 0))
+    {
+        const entry* e = d.findEntry(key, keyType::LITERAL);
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            top.name(), e ? e->startLineNumber() : -1
+        )
+            << "Entry '" << path.c_str() << "' of " << top.name()
+            << " must be a non-zero direction, got " << v << nl
+            << exit(FatalIOError);
+    }
+    const vector u(v/m);
+    return u/mag(u);
 }
 
 

@@ -48,7 +48,14 @@ void Foam::demPropertiesReader::readGeneral()
     {
         demPropertiesErrors::reportError(err, dict_);
     }
-    config_.gravity = toVec3(dict_.getOrDefault<vector>("gravity", vector(0, 0, -9.81)));
+    config_.gravity =
+        dict_.found("gravity", keyType::LITERAL)
+      ? toVec3(demPropertiesErrors::boundedVector
+        (
+            dict_, dict_, "gravity", "gravity",
+            demPropertiesErrors::maxMagnitude, "an acceleration (x y z) [m/s2]"
+        ))
+      : polydem::Vec3(0, 0, -9.81);
     config_.skinFraction = dict_.getOrDefault<scalar>("skin", 0.2);
     if (!(config_.skinFraction > 0))
     {
@@ -61,8 +68,16 @@ void Foam::demPropertiesReader::readGeneral()
     if (const dictionary* dom = dict_.findDict("domain"))
     {
         demPropertiesErrors::checkKeys(dict_, *dom, "domain", {"min", "max"});
-        config_.domainMin = toVec3(dom->get<vector>("min"));
-        config_.domainMax = toVec3(dom->get<vector>("max"));
+        config_.domainMin = toVec3(demPropertiesErrors::boundedVector
+        (
+            dict_, *dom, "min", "domain/min",
+            demPropertiesErrors::maxMagnitude, "a point (x y z) [m]"
+        ));
+        config_.domainMax = toVec3(demPropertiesErrors::boundedVector
+        (
+            dict_, *dom, "max", "domain/max",
+            demPropertiesErrors::maxMagnitude, "a point (x y z) [m]"
+        ));
         for (int k = 0; k < 3; ++k)
         {
             if (!(config_.domainMin[k] < config_.domainMax[k]))

@@ -254,17 +254,28 @@ const std::vector<Foam::demShapesReader::generator>&
 Foam::demShapesReader::generators()
 {
     // name, several shapes, entry blamed for a refused hull, generator
+    // and the entries it reads
+    typedef wordList keys;
+    const keys dEq({"equivalentDiameter"});
     static const std::vector<generator> table
     ({
-        {"stl", false, "", &makeHullOfFile},
-        {"rock", true, "points", &makeRocks},
-        {"box", false, "type", &makeBox},
-        {"cube", false, "type", &makeCube},
-        {"tetrahedron", false, "type", &makeTetrahedron},
-        {"octahedron", false, "type", &makeOctahedron},
-        {"dodecahedron", false, "type", &makeDodecahedron},
-        {"icosahedron", false, "type", &makeIcosahedron},
-        {"settling", false, "facets", &makeSettling}
+        generator{"stl", false, "", &makeHullOfFile, keys({"file", "scale", "convexHull"})},
+        generator
+        {
+            "rock", true, "points", &makeRocks,
+            keys({"equivalentDiameter", "elongation", "flatness", "points", "seed"})
+        },
+        generator{"box", false, "type", &makeBox, keys({"size"})},
+        generator{"cube", false, "type", &makeCube, keys({"edge"})},
+        generator{"tetrahedron", false, "type", &makeTetrahedron, dEq},
+        generator{"octahedron", false, "type", &makeOctahedron, dEq},
+        generator{"dodecahedron", false, "type", &makeDodecahedron, dEq},
+        generator{"icosahedron", false, "type", &makeIcosahedron, dEq},
+        generator
+        {
+            "settling", false, "facets", &makeSettling,
+            keys({"equivalentDiameter", "aspectRatio", "facets"})
+        }
     });
     return table;
 }
@@ -290,6 +301,11 @@ std::vector<polydem::ConvexShape> Foam::demShapesReader::readGeometry
         (
             gd, "type", kinds, "polyhedron geometry type"
         )];
+
+    wordList valid(gen.keys);
+    valid.append("type");
+    valid.append("shapes");
+    demPropertiesErrors::checkKeys(dict, gd, where, valid);
 
     // Number of shapes: several only for random rocks (one per seed)
     const label nShapes = gd.getOrDefault<label>("shapes", 1);

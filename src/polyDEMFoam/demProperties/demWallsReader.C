@@ -42,12 +42,25 @@ polydem::WallMotion Foam::demWallsReader::readMotion
     );
     if (m.kind == polydem::MotionKind::translation)
     {
-        m.velocity = toVec3(md->get<vector>("velocity"));
+        m.velocity = toVec3(demPropertiesErrors::boundedVector
+        (
+            demProperties, *md, "velocity",
+            "walls/" + wallDict.dictName() + "/motion/velocity",
+            demPropertiesErrors::maxMagnitude, "a velocity (u v w) [m/s]"
+        ));
     }
     else if (m.kind == polydem::MotionKind::rotation)
     {
-        m.origin = toVec3(md->get<vector>("origin"));
-        m.axis = toVec3(md->get<vector>("axis"));
+        const std::string at = "walls/" + wallDict.dictName() + "/motion/";
+        m.origin = toVec3(demPropertiesErrors::boundedVector
+        (
+            demProperties, *md, "origin", at + "origin",
+            demPropertiesErrors::maxMagnitude, "a point (x y z) [m]"
+        ));
+        m.axis = toVec3
+        (
+            demPropertiesErrors::unitDirection(demProperties, *md, "axis", at + "axis")
+        );
         const bool hasRpm = md->found("rpm", keyType::LITERAL);
         const bool hasOmega = md->found("omega", keyType::LITERAL);
         if (hasRpm == hasOmega)
@@ -74,7 +87,12 @@ polydem::Vec3 Foam::demWallsReader::readLoadPoint
     // About the rotation axis unless given: the torque that drives a drum
     if (wallDict.found("loadPoint", keyType::LITERAL))
     {
-        return toVec3(wallDict.get<vector>("loadPoint"));
+        return toVec3(demPropertiesErrors::boundedVector
+        (
+            wallDict, wallDict, "loadPoint",
+            "walls/" + wallDict.dictName() + "/loadPoint",
+            demPropertiesErrors::maxMagnitude, "a point (x y z) [m]"
+        ));
     }
     return motion.kind == polydem::MotionKind::rotation
         ? motion.origin
@@ -131,8 +149,16 @@ std::vector<Foam::demWallsReader::wallInfo> Foam::demWallsReader::read
         {
             polydem::PlaneWall w;
             w.name = e.keyword();
-            w.point = toVec3(wd.get<vector>("point"));
-            w.normal = toVec3(wd.get<vector>("normal"));
+            const std::string at = "walls/" + e.keyword() + "/";
+            w.point = toVec3(demPropertiesErrors::boundedVector
+            (
+                dict, wd, "point", at + "point",
+                demPropertiesErrors::maxMagnitude, "a point (x y z) [m]"
+            ));
+            w.normal = toVec3
+            (
+                demPropertiesErrors::unitDirection(dict, wd, "normal", at + "normal")
+            );
             w.material = demMaterialsReader::materialIndex(config, wd, "material");
             w.motion = readMotion(dict, wd);
             w.loadPoint = readLoadPoint(wd, w.motion);

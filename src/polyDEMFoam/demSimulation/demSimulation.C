@@ -1165,12 +1165,49 @@ void Foam::demSimulation::checkOverlap(const polydem::Statistics& s) const
     // Overlaps of sphere laws are a few per cent of the radius at most; one
     // of a third of the radius means particles are passing through each
     // other (time step or stiffness): name the pair (the host search runs
-    // only then). The overlap-volume law reports no ratio: not covered.
+    // only then). The overlap-volume law reports no ratio: see write()
     const double limit = 1.0/3.0;
     if (!(s.maxOverlapRatio > limit) && std::isfinite(s.maxOverlapRatio))
     {
         return;
     }
+    std::ostringstream what;
+    what << "DEM overlap of " << s.maxOverlapRatio << " of a radius (more"
+         << " than " << limit << ")";
+    reportDeepestOverlap(what.str(), false);
+}
+
+
+void Foam::demSimulation::checkPolyhedronOverlap() const
+{
+    // The overlap-volume law: the exact overlaps of all pairs in contact,
+    // once per write (the cost of one narrow phase on the host)
+    const double limit = 0.1;
+    const polydem::ParticleState p = system_->engine().particles();
+    const std::vector<polydem::InsertionOverlap> found =
+        polydem::insertionOverlaps
+        (
+            system_->config(), p, polydem::ParticleState(), false
+        );
+    for (const auto& o : found)
+    {
+        if (o.byVolume && o.measure > limit)
+        {
+            std::ostringstream what;
+            what << "DEM overlap volume of more than " << 100*limit
+                 << " % of a particle";
+            reportDeepestOverlap(what.str(), true);
+        }
+    }
+}
+
+
+void Foam::demSimulation::reportDeepestOverlap
+(
+    const std::string& what,
+    const bool byVolume
+) const
+{
     const polydem::ParticleState p = system_->engine().particles();
     const std::vector<polydem::InsertionOverlap> found =
         polydem::insertionOverlaps
@@ -1186,9 +1223,8 @@ void Foam::demSimulation::checkOverlap(const polydem::Statistics& s) const
         }
     }
     FatalErrorInFunction
-        << "DEM overlap of " << s.maxOverlapRatio << " of a radius at t = "
-        << system_->engine().time() << " s (more than " << limit
-        << "): particles are passing through each other" << nl;
+        << what.c_str() << " at t = " << system_->engine().time()
+        << " s: particles are passing through each other" << nl;
     if (worst)
     {
         const size_t i = worst->particle;
@@ -1211,8 +1247,16 @@ void Foam::demSimulation::checkOverlap(const polydem::Statistics& s) const
                 << p.position[j].z << "), velocity (" << p.velocity[j].x
                 << ' ' << p.velocity[j].y << ' ' << p.velocity[j].z << ")";
         }
-        FatalError<< ": depth " << 2*worst->measure << " of the smaller"
-            << " radius" << nl;
+        if (byVolume || worst->byVolume)
+        {
+            FatalError<< ": overlap volume " << 100*worst->measure
+                << " % of the smaller particle" << nl;
+        }
+        else
+        {
+            FatalError<< ": depth " << 2*worst->measure << " of the smaller"
+                << " radius" << nl;
+        }
     }
     FatalError
         << "    usual causes: a time step too large for the stiffness"
@@ -1226,6 +1270,10 @@ void Foam::demSimulation::write()
 {
     if (runTime_.writeTime())
     {
+        if (input_.config().contact.law == polydem::ContactLaw::overlapVolume)
+        {
+            checkPolyhedronOverlap();
+        }
         writeState();
     }
 }

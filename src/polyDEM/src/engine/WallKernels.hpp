@@ -64,11 +64,17 @@ struct WallContact
         return law.nMaterials == 1 ? law.pairs[0] : law.pair(law.typeMaterial[p.type[i]], material);
     }
 
-    //- Point contact of a sphere (Hertz, linear law) at wallPoint
+    //- Point contact of a sphere (Hertz, linear law) at wallPoint.
+    //  planeNormal (planes only; into the particle side): a centre on or
+    //  behind the plane keeps the plane's normal and the overlap r - h of
+    //  its signed distance h, instead of the direction to the foot point,
+    //  which flips there (pulling the sphere through, and an overlap below
+    //  zero once h < -r)
     PD_CONTACT void point
     (
         int i, int material, const Vec3& wallPoint, const Vec3& wallVel, const Vec3& wallOmega,
-        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load,
+        const Vec3* planeNormal = nullptr, double signedDistance = 0
     ) const
     {
         const Vec3 x = p.pos[i];
@@ -76,8 +82,16 @@ struct WallContact
         const Vec3 d = wallPoint - x;
         const double dist = norm(d);
         ContactKinematics k;
-        k.normal = (1.0 / dist) * d;
-        k.overlap = r - dist;
+        if (planeNormal && !(signedDistance > 0))
+        {
+            k.normal = -1.0 * (*planeNormal);
+            k.overlap = r - signedDistance;
+        }
+        else
+        {
+            k.normal = (1.0 / dist) * d;
+            k.overlap = r - dist;
+        }
         k.rStar = r;
         k.mStar = p.mass[i];
         if (needsResistanceInertia(law.law))
@@ -215,7 +229,7 @@ struct ParticleForces
             }
             ++walls;
             wall.point(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
-                       planeXi[c], mr, F, T, shares.plane(i, planePlane[c]));
+                       planeXi[c], mr, F, T, shares.plane(i, planePlane[c]), &n, h);
         }
         return walls;
     }

@@ -298,6 +298,19 @@ void System::checkStability(const ParticleState& particles, const std::string& w
             config_.source, "timeStep"
         );
     }
+    // Far below the limit: a units slip (1e-11 for 1e-5), and a run that
+    // would take forever, not a careful choice
+    const double smallest = 1e-5;
+    if (dtMax < 1e299 && config_.timeStep < smallest * dtMax)
+    {
+        throw Error
+        (
+            "time step " + str(config_.timeStep) + " s is below " + str(smallest)
+            + " of the contact-stability limit " + str(dtMax) + " s for " + what
+            + ": check the units (seconds); a step of 0.05 to 0.2 of the limit is usual",
+            config_.source, "timeStep"
+        );
+    }
 }
 
 
