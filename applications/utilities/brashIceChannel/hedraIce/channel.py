@@ -336,12 +336,14 @@ class Channel:
             i0, j0 = int(math.floor(cx / cell)), int(math.floor(cy / cell))
             near = [o for i in (i0 - 1, i0, i0 + 1) for j in (j0 - 1, j0, j0 + 1)
                     for o in grid.get((i, j), ()) if b.plan_overlaps(o, self.gap)]
-            # lowest bottom in [zlo, zhi - t] clear of the plan-overlapping blocks
+            # lowest bottom in [zlo, zhi - t] clear of the plan-overlapping blocks;
+            # stacked blocks touch face to face (zero overlap volume: no force),
+            # so that H = n t holds n layers exactly
             z = zlo
             for o in sorted(near, key=lambda o: o.z0):
-                if o.z0 >= z + t + self.gap:
+                if o.z0 >= z + t:
                     break
-                z = max(z, o.z1 + self.gap)
+                z = max(z, o.z1)
             if z > zhi - t + 1e-12 * t:
                 continue
             if self.H.min() == self.H.max() and abs(self.H.max() - t) < 1e-12 * t:
