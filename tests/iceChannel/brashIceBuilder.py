@@ -12,6 +12,8 @@ Case A: cuboids, log-normal sizes in 6 classes, one layer (H = t = 0.1 m),
 Case B: random convex plates (3 shapes per class), a table of sizes with
         frequencies, block thickness 0.05 m in a profile 0.1 m at the
         centreline to 0.2 m at the edges (stacked blocks), porosity 0.6.
+Case C: as A with `packing lattice` (rows, headings within +-5 deg) at
+        porosity 0.3, which random addition cannot reach.
 Checks and tolerances:
   1. no two blocks intersect: for every pair closer than the sum of their
      bounding radii, the LP  max s  s.t.  A1 x <= b1 - s, A2 x <= b2 - s  (the
@@ -63,6 +65,20 @@ sizeClasses 6;
 shape { type cuboid; aspectRatio 0.8; }
 porosity 0.5;
 seed 3;
+iceDensity 920;
+waterDensity 1010;
+"""
+CASE_C = """
+channel { origin (0 -1); length 3; width 2; waterLevel 2.5; }
+thickness { type uniform; value 0.1; }
+blockThickness 0.1;
+sizeDistribution { type logNormal; median 0.1; sigma 0.3; min 0.05; max 0.2; }
+sizeClasses 6;
+shape { type cuboid; aspectRatio 0.8; }
+packing lattice;
+yawSpread 5;
+porosity 0.3;
+seed 4;
 iceDensity 920;
 waterDensity 1010;
 """
@@ -277,9 +293,11 @@ def check_table(D, n, fails, tag):
 
 def main():
     fails = []
-    which = sys.argv[1:] or ["A", "B"]
+    which = sys.argv[1:] or ["A", "B", "C"]
     if "A" in which:
         run(CASE_A, fails, "A", lambda e: 0.1, 0.1, check_lognormal)
+    if "C" in which:
+        run(CASE_C, fails, "C", lambda e: 0.1, 0.1, check_lognormal)
     if "B" in which:
         prof = lambda e: float(np.interp(e, [0, 0.5, 1], [0.1, 0.1, 0.2]))
         run(CASE_B, fails, "B", prof, 0.05, check_table)

@@ -105,6 +105,7 @@ def main(argv=None):
     a = p.parse_args(argv)
     dfile = a.dict if os.path.isabs(a.dict) else os.path.join(a.case, a.dict)
     d = Dict.read(dfile)
+    d.check_keys(["hull", "placement", "resolution", "file", "fsicr"])
     hull = hull_from_dict(d.sub("hull"))
     f = d.sub("fsicr")
     f.check_keys(["scale", "iceClass", "channelThickness", "output"])

@@ -228,7 +228,7 @@ def main(argv=None):
     a = p.parse_args(argv)
     dfile = a.dict if os.path.isabs(a.dict) else os.path.join(a.case, a.dict)
     d = Dict.read(dfile)
-    d.check_keys(["hull", "placement", "resolution", "file"])
+    d.check_keys(["hull", "placement", "resolution", "file", "fsicr"])  # fsicr: read by fsicr
     hull = hull_from_dict(d.sub("hull"))
     res = d.sub("resolution") if "resolution" in d else None
     if res is not None:
