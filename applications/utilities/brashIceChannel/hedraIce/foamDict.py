@@ -180,6 +180,10 @@ class Dict:
         if key not in self.entries:
             if default is not None:
                 return default
+            for k, v in self.entries.items():  # swallowed by an entry without ';'?
+                if isinstance(v, list) and key in v:
+                    self.error(k, f"missing entry '{key}': is a ';' missing after "
+                               f"entry '{k}' (its value reads '{_show(v)}')?")
             self.error(key, f"missing entry '{key}'")
         v = self.entries[key]
         if kind in (float, int):
