@@ -14,7 +14,12 @@ and the dummy hull as a wall; demFoam runs one DEM step.  Every vertex of
 start of a fresh run) must coincide with a vertex rebuilt here from the
 insertion (position + R(orientation) x body vertices, docs/demProperties.md)
 and vice versa, to 1e-9 m; and the counts must agree.  A wrong orientation
-convention, axis order or centroid moves vertices by centimetres.
+convention, axis order or centroid moves vertices by centimetres.  Together
+with brashIceBuilder (the same rebuild from the written files satisfies the
+overlap, draft and slab checks) this closes the chain builder -> files ->
+engine.  Checked to fail: with the builder's engine-frame sort switched off,
+the plate STLs no longer match the engine's body frame (FAILED).
+Needs demFoam on PATH (./Allwmake; or source /work/main/etc/bashrc).
 """
 import os
 import re
