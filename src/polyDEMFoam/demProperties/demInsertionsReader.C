@@ -396,6 +396,52 @@ void Foam::demInsertionsReader::readParticleList
 }
 
 
+void Foam::demInsertionsReader::readInflow
+(
+    const dictionary& dict,
+    const dictionary& id,
+    insertion& ins
+)
+{
+    const std::string base = "insertion/" + ins.name + "/";
+    ins.kind = insertion::method::inflow;
+    ins.solidFraction = id.get<scalar>("solidFraction");
+    if (!(ins.solidFraction > 0 && ins.solidFraction < 1))
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "solidFraction' must lie in (0, 1) "
+            << "(the region's target solid volume fraction, 1 - porosity), "
+            << "not " << ins.solidFraction << ", in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    ins.interval = id.getOrDefault<scalar>("interval", 0);
+    if (!(ins.interval >= 0))
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "interval' must be >= 0 [s] "
+            << "(0: check at every deltaT), not " << ins.interval << ", in "
+            << dict.name() << nl << exit(FatalIOError);
+    }
+    ins.attempts = id.getOrDefault<label>("attempts", 200);
+    if (ins.attempts < 1)
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "attempts' must be >= 1, not "
+            << ins.attempts << ", in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    ins.randomYaw = id.getOrDefault<bool>("randomYaw", false);
+    ins.yawAxis = toVec3(id.getOrDefault<vector>("yawAxis", vector(0, 0, 1)));
+    if (!(norm(ins.yawAxis) > 0))
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "yawAxis' must not be zero in "
+            << dict.name() << nl << exit(FatalIOError);
+    }
+    ins.endTime = id.getOrDefault<scalar>("endTime", GREAT);
+}
+
+
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
 
 std::vector<Foam::demInsertionsReader::insertion>
@@ -412,7 +458,7 @@ Foam::demInsertionsReader::read
     {
         return insertions;
     }
-    static const wordList kinds({"randomFill", "list"});
+    static const wordList kinds({"randomFill", "list", "inflow"});
     for (const entry& e : *d)
     {
         if (!e.isDict())
@@ -429,11 +475,18 @@ Foam::demInsertionsReader::read
             "velocity", "orientation", "region", "diameterDistribution",
             "particles"
         });
+        static const wordList inflowKeys
+        ({
+            "type", "particleType", "time", "seed", "gap", "velocity",
+            "orientation", "region", "diameterDistribution", "solidFraction",
+            "interval", "attempts", "randomYaw", "yawAxis", "endTime"
+        });
+        const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
         demPropertiesErrors::checkKeys
         (
-            dict, id, "insertion/" + e.keyword(), insertionKeys
+            dict, id, "insertion/" + e.keyword(),
+            kind == 2 ? inflowKeys : insertionKeys
         );
-        const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
         insertion ins;
         ins.name = e.keyword();
         ins.type = typeIndex(userTypes, id, "particleType");
@@ -453,7 +506,14 @@ Foam::demInsertionsReader::read
             insertions.push_back(std::move(ins));
             continue;
         }
-        ins.number = id.get<label>("number");
+        if (kind == 2)
+        {
+            readInflow(dict, id, ins);
+        }
+        else
+        {
+            ins.number = id.get<label>("number");
+        }
         ins.seed = id.getOrDefault<label>("seed", 1);
         ins.gap = id.getOrDefault<scalar>("gap", 0);
         if (!(ins.gap >= 0))
@@ -470,6 +530,21 @@ Foam::demInsertionsReader::read
             ins.fixedOrientation = true;
             ins.orientation =
                 orientationFromAngles(id.get<vector>("orientation"));
+        }
+        if (ins.randomYaw && !userTypes[ins.type].polyhedron)
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry 'insertion/" << e.keyword() << "/randomYaw': "
+                << "particle type '" << userTypes[ins.type].name << "' is a "
+                << "sphere, which has no heading; remove the entry from "
+                << dict.name() << nl << exit(FatalIOError);
+        }
+        if (ins.randomYaw && !ins.fixedOrientation)
+        {
+            // A random heading about the given flat orientation; without
+            // one, the blocks keep their body axes flat
+            ins.fixedOrientation = true;
+            ins.orientation = polydem::Quaternion();
         }
         if (ins.number < 0)
         {

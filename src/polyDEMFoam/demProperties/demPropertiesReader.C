@@ -31,7 +31,7 @@ void Foam::demPropertiesReader::readGeneral()
     ({
         "device", "timeStep", "gravity", "skin", "domain", "contactModel",
         "materials", "interactions", "particleTypes", "walls", "insertion",
-        "output", "reportInterval", "freshStart", "monitors"
+        "output", "reportInterval", "freshStart", "monitors", "outlets"
     });
     demPropertiesErrors::checkKeys(dict_, dict_, "", topKeys);
 
@@ -87,6 +87,47 @@ void Foam::demPropertiesReader::readGeneral()
                     << "direction, in " << dict_.name() << nl
                     << exit(FatalIOError);
             }
+        }
+    }
+
+    // Outlet regions: boxes whose particles are removed, counted per region
+    if (dict_.found("outlets", keyType::LITERAL))
+    {
+        const dictionary* od = dict_.findDict("outlets");
+        if (!od)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'outlets' must be a dictionary of named boxes, "
+                << "outlets { <name> { min (x y z); max (x y z); } }, in "
+                << dict_.name() << nl << exit(FatalIOError);
+        }
+        for (const entry& e : *od)
+        {
+            const std::string path = "outlets/" + std::string(e.keyword());
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*od)
+                    << "Entry '" << path.c_str() << "' must be a dictionary "
+                    << "{ min (x y z); max (x y z); } in " << dict_.name()
+                    << nl << exit(FatalIOError);
+            }
+            const dictionary& bd = e.dict();
+            demPropertiesErrors::checkKeys(dict_, bd, path, {"min", "max"});
+            polydem::OutletRegion o;
+            o.name = e.keyword();
+            o.min = toVec3(bd.get<vector>("min"));
+            o.max = toVec3(bd.get<vector>("max"));
+            for (int k = 0; k < 3; ++k)
+            {
+                if (!(o.min[k] < o.max[k]))
+                {
+                    FatalIOErrorInFunction(bd)
+                        << "Entry '" << path.c_str() << "': min must be below "
+                        << "max in every direction, in " << dict_.name() << nl
+                        << exit(FatalIOError);
+                }
+            }
+            config_.outlets.push_back(o);
         }
     }
 }

@@ -22,6 +22,7 @@ Description
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <unordered_map>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -140,13 +141,180 @@ Foam::fileName Foam::demSimulation::timePath() const
 
 void Foam::demSimulation::startSystem(polydem::Snapshot state)
 {
+    if (system_)
+    {
+        collectRemoved();
+    }
     polydem::SimulationConfig config = input_.configWith(wallActive_, wallMap_);
     system_.reset(new polydem::System(std::move(config)));
     system_->initialise(std::move(state));
+    collectRemoved();
     if (wallLoadsRequested_)
     {
         system_->engine().enableWallLoads(true);
     }
+}
+
+
+void Foam::demSimulation::collectRemoved()
+{
+    const std::vector<polydem::RemovedParticle> r =
+        system_->engine().takeRemoved();
+    if (r.empty())
+    {
+        return;
+    }
+    balance_.addRemoved(r);
+}
+
+
+double Foam::demSimulation::meanParticleVolume(size_t k) const
+{
+    const auto& ins = input_.insertions()[k];
+    const auto& ut = input_.userTypes()[ins.type];
+    const auto& config = input_.config();
+    if (ut.polyhedron)
+    {
+        // The shapes are drawn with equal probability (by bounding size)
+        double v = 0;
+        for (int t = 0; t < ut.nTypes; ++t)
+        {
+            const auto& type = config.types[ut.firstType + t];
+            v += config.shapes[type.shapeIndex].volume;
+        }
+        return v/ut.nTypes;
+    }
+    // Spheres: the mean of pi d^3/6 over the distribution, from a fixed
+    // sample (deterministic)
+    std::mt19937_64 rng(12345u);
+    const int n = 4096;
+    double v = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const double d = ins.sizes.sample(rng);
+        v += constant::mathematical::pi/6*d*d*d;
+    }
+    return v/n;
+}
+
+
+bool Foam::demSimulation::inflowDue(size_t k, scalar t) const
+{
+    const auto& ins = input_.insertions()[k];
+    const scalar eps = 1e-9*runTime_.deltaTValue();
+    if (t + eps < ins.time || t > ins.endTime + eps)
+    {
+        return false;
+    }
+    // Every interval, counted in time steps from t = 0 (the same schedule
+    // after a restart)
+    const scalar deltaT = runTime_.deltaTValue();
+    const label every = max(label(1), label(std::llround(ins.interval/deltaT)));
+    const label index = label(std::llround(t/deltaT));
+    return index % every == 0;
+}
+
+
+polydem::ParticleState Foam::demSimulation::insertInflow
+(
+    size_t k,
+    const polydem::ParticleState& present,
+    int64_t step
+) const
+{
+    const auto& ins = input_.insertions()[k];
+    const auto& ut = input_.userTypes()[ins.type];
+    const auto& config = input_.config();
+
+    // The region's solid volume now (particles whose centre is in it)
+    const auto bb = ins.region.bounds();
+    double solid = 0;
+    polydem::ParticleState near;
+    double rMax = 0;
+    for (size_t i = 0; i < present.size(); ++i)
+    {
+        rMax = std::max(rMax, present.radius[i]);
+    }
+    for (size_t i = 0; i < present.size(); ++i)
+    {
+        const polydem::Vec3& x = present.position[i];
+        const double r = present.radius[i] + rMax + ins.gap;
+        bool close = true;
+        for (int d = 0; d < 3; ++d)
+        {
+            close = close && x[d] >= bb.first[d] - r && x[d] <= bb.second[d] + r;
+        }
+        if (!close)
+        {
+            continue;
+        }
+        // Obstacles: only the particles that can touch the region
+        polydem::ParticleState one;
+        one.resize(1);
+        one.position[0] = x;
+        one.radius[0] = present.radius[i];
+        polydem::appendParticles(near, one);
+        if (ins.region.contains(x, 0))
+        {
+            const auto& type = config.types[present.type[i]];
+            solid += present.mass[i]/config.materials[type.material].density;
+        }
+    }
+    const double target = ins.solidFraction*ins.region.volume();
+    const double missing = target - solid;
+    const label number = label(std::floor(missing/meanParticleVolume_[k]));
+    if (number < 1)
+    {
+        return polydem::ParticleState();
+    }
+
+    polydem::RandomFillInsertion fill;
+    fill.types = demInsertionsReader::insertionTypes(ut);
+    fill.region = ins.region;
+    fill.sizes = ins.sizes;
+    fill.number = size_t(number);
+    // SplitMix64 of (seed, step): a new stream per check, known at restart
+    uint64_t z = uint64_t(ins.seed)*0x9E3779B97F4A7C15ull + uint64_t(step);
+    z = (z ^ (z >> 30))*0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27))*0x94D049BB133111EBull;
+    fill.seed = z ^ (z >> 31);
+    fill.gap = ins.gap;
+    fill.velocity = ins.velocity;
+    fill.fixedOrientation = ins.fixedOrientation;
+    fill.orientation = ins.orientation;
+    fill.randomYaw = ins.randomYaw;
+    fill.yawAxis = ins.yawAxis;
+    fill.maxAttempts = size_t(ins.attempts);
+    fill.partial = true;
+
+    polydem::InsertedParticles added;
+    try
+    {
+        added = polydem::insertRandomFill
+        (
+            *system_, fill, near, polydem::nextParticleId(present)
+        );
+    }
+    catch (const polydem::Error& err)
+    {
+        throw polydem::Error
+        (
+            err.message(), input_.dict().name(), "insertion/" + ins.name
+        );
+    }
+    checkInsertedMotion
+    (
+        added.particles, "insertion/" + ins.name + "/velocity", false
+    );
+    if (input_.reportInterval() <= 0 || added.particles.size() > 0)
+    {
+        Info<< "DEM inflow '" << ins.name << "': +"
+            << label(added.particles.size()) << " of " << number
+            << " wanted, solid fraction " << solid/ins.region.volume()
+            << " -> " << (solid + added.volume)/ins.region.volume()
+            << " (target " << ins.solidFraction << ")" << endl;
+    }
+    return added.particles;
 }
 
 
@@ -173,11 +341,15 @@ void Foam::demSimulation::collectWallLoads()
         polydem::WallLoad& m = wallLoadMean_[f];
         m.force = a*m.force;
         m.torque = a*m.torque;
+        m.normalForce = a*m.normalForce;
+        m.contacts = a*m.contacts;
         const int k = wallMap_[f];
         if (k >= 0 && size_t(k) < s.sum.size())
         {
             m.force += b*s.sum[k].force;
             m.torque += b*s.sum[k].torque;
+            m.normalForce += b*s.sum[k].normalForce;
+            m.contacts += b*s.sum[k].contacts;
             m.point = s.sum[k].point;
         }
     }
@@ -436,22 +608,45 @@ void Foam::demSimulation::insertDue()
     const scalar t = runTime_.value() - runTime_.deltaTValue();
     for (size_t k = 0; k < insertionDone_.size(); ++k)
     {
+        const auto& ins = input_.insertions()[k];
+        if (ins.kind == demPropertiesReader::insertion::method::inflow)
+        {
+            if (!inflowDue(k, t))
+            {
+                continue;
+            }
+            const polydem::ParticleState present = system_->engine().particles();
+            const polydem::ParticleState added =
+                insertInflow(k, present, system_->engine().step());
+            if (added.size())
+            {
+                system_->addParticles
+                (
+                    added, "the particles of insertion '" + ins.name + "'"
+                );
+                balance_.addInserted(k, added);
+                collectRemoved();
+            }
+            continue;
+        }
         if (insertionDone_[k])
         {
             continue;
         }
-        const auto& ins = input_.insertions()[k];
         if (ins.time > t + 1e-9*runTime_.deltaTValue())
         {
             continue;
         }
         insertionDone_[k] = true;
         const polydem::ParticleState present = system_->engine().particles();
+        const polydem::ParticleState added =
+            insert(k, present, polydem::nextParticleId(present));
         system_->addParticles
         (
-            insert(k, present, polydem::nextParticleId(present)),
-            "the particles of insertion '" + ins.name + "'"
+            added, "the particles of insertion '" + ins.name + "'"
         );
+        balance_.addInserted(k, added);
+        collectRemoved();
     }
 }
 
@@ -613,6 +808,11 @@ void Foam::demSimulation::writeState()
     (
         dir/"state", state, input_.stateFormat(),
         polydem::stateTypeRecords(input_.config())
+    );
+    balance_.check(int64_t(state.particles.size()), "at the write");
+    balance_.write
+    (
+        dir/"particleBalance", state.step, int64_t(state.particles.size())
     );
 
     if (input_.writeVtk())
@@ -900,6 +1100,22 @@ Foam::demSimulation::demSimulation
     wallRemovalStep_(input_.walls().size(), -1),
     wallMap_(),
     insertionDone_(input_.insertions().size(), false),
+    balance_
+    (
+        [this]()
+        {
+            std::vector<std::string> n;
+            for (const auto& ins : input_.insertions()) n.push_back(ins.name);
+            return n;
+        }(),
+        [this]()
+        {
+            std::vector<std::string> n;
+            for (const auto& o : input_.config().outlets) n.push_back(o.name);
+            return n;
+        }()
+    ),
+    meanParticleVolume_(),
     stepsPerDeltaT_(computeStepsPerDeltaT()),
     lastEvolveTime_(runTime_.value()),
     stepCarry_(0),
@@ -924,6 +1140,11 @@ Foam::demSimulation::demSimulation
         {
             wallRemovalStep_[k] = int64_t(std::llround(until/dt));
         }
+    }
+
+    for (size_t k = 0; k < input_.insertions().size(); ++k)
+    {
+        meanParticleVolume_.push_back(meanParticleVolume(k));
     }
 
     const fileName statePath(timePath()/"polyDEM"/"state");
@@ -961,6 +1182,11 @@ Foam::demSimulation::demSimulation
                 input_.insertions()[k].time
               < runTime_.value() - 1e-9*runTime_.deltaTValue();
         }
+        balance_.read
+        (
+            timePath()/"polyDEM"/"particleBalance", state.step,
+            int64_t(state.particles.size())
+        );
         startSystem(std::move(state));
 
         particlesPvd_.read(casePath()/"particles.pvd", runTime_.value());
@@ -1015,14 +1241,20 @@ Foam::demSimulation::demSimulation
         startSystem(state);
         for (size_t k = 0; k < insertionDone_.size(); ++k)
         {
-            if (input_.insertions()[k].time <= runTime_.value() + 1e-9*runTime_.deltaTValue())
+            const auto& ins = input_.insertions()[k];
+            if (ins.kind == demPropertiesReader::insertion::method::inflow)
+            {
+                // Its first fill is at the start of the first time step
+                // (evolve), on the schedule a restart keeps
+                continue;
+            }
+            if (ins.time <= runTime_.value() + 1e-9*runTime_.deltaTValue())
             {
                 insertionDone_[k] = true;
-                polydem::appendParticles
-                (
-                    state.particles,
-                    insert(k, state.particles, polydem::nextParticleId(state.particles))
-                );
+                const polydem::ParticleState p =
+                    insert(k, state.particles, polydem::nextParticleId(state.particles));
+                balance_.addInserted(k, p);
+                polydem::appendParticles(state.particles, p);
             }
         }
         startSystem(std::move(state));
@@ -1060,6 +1292,7 @@ Foam::demSimulation::demSimulation
         casePath()/"postProcessing"/"demFoam"/runTime_.timeName()
     );
     mkDir(summaryDir);
+    balance_.openLog(summaryDir);
     summary_.reset(new OFstream(summaryDir/"summary.dat"));
     summary_().precision(10);
     summary_()
@@ -1138,6 +1371,7 @@ void Foam::demSimulation::evolve()
             }
         }
         system_->advance(next - step);
+        collectRemoved();
         collectWallLoads();
         removeDueWalls();
     }
@@ -1156,6 +1390,8 @@ void Foam::demSimulation::sample()
         << label(s.wallContacts) << ' ' << label(s.particlesInContact) << ' '
         << e.kinetic() << ' ' << e.translational << ' ' << e.rotational << ' '
         << e.gravitational << ' ' << s.maxOverlapRatio << endl;
+    balance_.check(int64_t(s.particles), "at t = " + std::to_string(engine.time()));
+    balance_.sample(engine.time(), engine.step(), int64_t(s.particles));
     checkOverlap(s);
 }
 

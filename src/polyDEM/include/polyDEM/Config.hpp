@@ -114,12 +114,24 @@ struct MeshWall
     Vec3 loadPoint;
 };
 
+//- A box whose particles are removed (an outlet region). The removal is the
+//  domain's: both are applied where the neighbour lists are rebuilt, with
+//  the particles' positions at that rebuild, and every removed particle is
+//  reported with the region that removed it (Engine::takeRemoved)
+struct OutletRegion
+{
+    std::string name;
+    Vec3 min, max;
+};
+
 struct SimulationConfig
 {
     double timeStep = 0;            //!< [s]
     Vec3 gravity{0, 0, -9.81};
     //- Particles leaving this box are removed (an outlet)
     Vec3 domainMin{-1e30, -1e30, -1e30}, domainMax{1e30, 1e30, 1e30};
+    //- Particles inside one of these boxes are removed as well
+    std::vector<OutletRegion> outlets;
     //- Verlet skin as a fraction of the largest particle diameter
     double skinFraction = 0.2;
     std::vector<Material> materials;

@@ -43,6 +43,28 @@ struct WallLoad
     Vec3 force;
     Vec3 torque;
     Vec3 point;    //!< where the torque is taken: the load point at that time (world)
+    //- The part of force along the contact normals (each contact's force
+    //  projected on its own normal, summed); force - normalForce is the
+    //  frictional (tangential) part
+    Vec3 normalForce;
+    //- Particle-wall contacts (particle with a plane, or with one triangle
+    //  of a mesh); in a WallLoadSum the sum over its steps
+    double contacts = 0;
+
+    Vec3 frictionForce() const { return force - normalForce; }
+};
+
+//- A particle the engine removed: it left the domain (region -1) or entered
+//  outlet region k of SimulationConfig::outlets
+struct RemovedParticle
+{
+    std::int64_t id = 0;
+    int type = 0;
+    double mass = 0;
+    Vec3 position;      //!< where it was at the removal (a neighbour-list rebuild)
+    Vec3 velocity;
+    int region = -1;
+    double time = 0;
 };
 
 //- Wall loads summed over the steps taken since the last reset: divide by
@@ -72,7 +94,8 @@ public:
     //- Copy only the particle state back to the host
     virtual ParticleState particles() const = 0;
 
-    //- Add particles (ids must be new); contact history starts empty for them
+    //- Add particles (ids must be new); contact history starts empty for them;
+    //  the external forces of the particles present stay, the new ones get none
     virtual void addParticles(const ParticleState& added) = 0;
 
     //- Constant external force and torque per particle (fluid coupling), in the
@@ -98,6 +121,10 @@ public:
     //- The loads summed over the steps since the last reset (or the enabling)
     virtual WallLoadSum wallLoadSum() const = 0;
     virtual void resetWallLoadSum() = 0;
+
+    //- The particles removed (domain, outlets) since the last call, in the
+    //  order of the removal passes and, within one, of the particle order
+    virtual std::vector<RemovedParticle> takeRemoved() = 0;
 
     virtual double time() const = 0;
     virtual std::int64_t step() const = 0;

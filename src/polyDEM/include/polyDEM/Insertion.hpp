@@ -50,6 +50,14 @@ struct RandomFillInsertion
     //- Polyhedra: all with orientation (instead of random ones)
     bool fixedOrientation = false;
     Quaternion orientation;
+    //- Polyhedra: orientation, then a uniformly random turn about yawAxis
+    //  (floating ice: flat, any heading); needs fixedOrientation
+    bool randomYaw = false;
+    Vec3 yawAxis{0, 0, 1};
+    //- Tries per particle, and whether a fill that runs out of room keeps
+    //  the particles placed so far (true) or throws (false)
+    std::size_t maxAttempts = 20000;
+    bool partial = false;
 };
 
 //- One particle of a list insertion

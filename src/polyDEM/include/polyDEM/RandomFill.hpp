@@ -106,7 +106,8 @@ struct SphereSeed
 //  already placed, e.g. by an earlier insertion). Deterministic for a seed.
 //  Gives up when one sphere finds no place in maxAttempts tries, throwing
 //  polydem::Error with how many of how many were placed and the volume
-//  fraction reached.
+//  fraction reached; with partial, returns the spheres placed until then
+//  instead (an inflow tops a region up with what fits).
 std::vector<SphereSeed> randomFill
 (
     const FillRegion& region,
@@ -115,7 +116,8 @@ std::vector<SphereSeed> randomFill
     std::uint64_t seed,
     double gap = 0,
     const std::vector<SphereSeed>& obstacles = {},
-    std::size_t maxAttempts = 20000
+    std::size_t maxAttempts = 20000,
+    bool partial = false
 );
 
 //- Simple cubic lattice of equal spheres (diameter d, centre spacing

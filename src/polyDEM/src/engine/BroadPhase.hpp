@@ -42,16 +42,38 @@ struct CellKey
     }
 };
 
+//- Particle i is kept: inside the domain box and in none of the outlet boxes
 struct InsideDomain
 {
     const Vec3* ref;
     Vec3 lo, hi;
+    const Vec3* outletLo = nullptr;   //!< nOutlets boxes
+    const Vec3* outletHi = nullptr;
+    int nOutlets = 0;
+
+    PD_HD static bool inBox(const Vec3& x, const Vec3& a, const Vec3& b)
+    {
+        return x.x >= a.x && x.x <= b.x && x.y >= a.y && x.y <= b.y && x.z >= a.z && x.z <= b.z;
+    }
 
     PD_HD bool operator()(int i) const
     {
         const Vec3 x = ref[i];
-        return x.x >= lo.x && x.x <= hi.x && x.y >= lo.y && x.y <= hi.y && x.z >= lo.z && x.z <= hi.z;
+        if (!inBox(x, lo, hi)) return false;
+        for (int k = 0; k < nOutlets; ++k)
+        {
+            if (inBox(x, outletLo[k], outletHi[k])) return false;
+        }
+        return true;
     }
+};
+
+//- Particle i is removed (the complement of InsideDomain)
+struct OutsideDomain
+{
+    InsideDomain inside;
+
+    PD_HD bool operator()(int i) const { return !inside(i); }
 };
 
 struct MarkCellRanges

@@ -93,6 +93,7 @@ public:
         setupLaw();
         setupPlanes();
         setupWallLoadPoints();
+        setupOutlets();
         uploadParticles(s.particles);
         if (s.referencePosition.size() == s.particles.size())
         {
@@ -220,11 +221,17 @@ public:
             all.torque.push_back(Vec3());
             ref.push_back(added.position[i]);
         }
+        // External (fluid) forces of the particles present stay (a coupled
+        // run's inflow inserts between two coupling steps); the new ones
+        // have none until the next coupling step sets them
+        std::vector<Vec3> extF = toHost(extForce_), extT = toHost(extTorque_);
+        if (!extF.empty()) extF.resize(all.size(), Vec3());
+        if (!extT.empty()) extT.resize(all.size(), Vec3());
         // History of the existing particles survives: rebuild() matches it by id
         uploadParticles(all, false);
         toDevice(ref_, ref);
-        extForce_.clear();
-        extTorque_.clear();
+        toDevice(extForce_, extF);
+        toDevice(extTorque_, extT);
         setupMeshes();
         rebuild(true);
         computeForces();
@@ -328,10 +335,69 @@ public:
         wallLoadSteps_ = 0;
     }
 
+    std::vector<RemovedParticle> takeRemoved() override
+    {
+        std::vector<RemovedParticle> out;
+        out.swap(removed_);
+        return out;
+    }
+
     double time() const override { return time_; }
     int64_t step() const override { return step_; }
 
 private:
+    //- The outlet boxes on the device
+    void setupOutlets()
+    {
+        std::vector<Vec3> lo, hi;
+        for (const auto& o : config_.outlets)
+        {
+            lo.push_back(o.min);
+            hi.push_back(o.max);
+        }
+        toDevice(outletLo_, lo);
+        toDevice(outletHi_, hi);
+    }
+
+    //- Record the nRemoved particles that inside rejects (before the
+    //  permutation drops them), with the region that removed each: the
+    //  first outlet holding it, else the domain (-1)
+    void logRemoved(const InsideDomain& inside, int nRemoved)
+    {
+        const int oldN = int(id_.size());
+        const auto first = thrust::counting_iterator<int>(0);
+        dvec<int> gone(nRemoved);
+        thrust::copy_if(thrust::device, first, first + oldN, gone.begin(), OutsideDomain{inside});
+        const std::vector<int> idx = toHost(gone);
+        const std::vector<int64_t> id = toHost(id_);
+        const std::vector<int> type = toHost(type_);
+        const std::vector<double> mass = toHost(mass_);
+        const std::vector<Vec3> pos = toHost(pos_);
+        const std::vector<Vec3> ref = toHost(ref_);
+        const std::vector<Vec3> vel = toHost(vel_);
+        for (int i : idx)
+        {
+            RemovedParticle r;
+            r.id = id[i];
+            r.type = type[i];
+            r.mass = mass[i];
+            r.position = pos[i];
+            r.velocity = vel[i];
+            r.time = time_;
+            const bool inDomain = InsideDomain::inBox(ref[i], config_.domainMin, config_.domainMax);
+            r.region = -1;
+            for (size_t k = 0; inDomain && k < config_.outlets.size(); ++k)
+            {
+                if (InsideDomain::inBox(ref[i], config_.outlets[k].min, config_.outlets[k].max))
+                {
+                    r.region = int(k);
+                    break;
+                }
+            }
+            removed_.push_back(r);
+        }
+    }
+
     // Time is step * dt relative to the step/time the run started from, so a
     // restart reproduces the same wall positions to the bit.
     double timeOffset() const { return time0_ - double(step0_) * config_.timeStep; }
@@ -715,12 +781,17 @@ private:
         }
         const auto first = thrust::counting_iterator<int>(0);
 
-        // Keep the particles inside the domain
+        // Keep the particles inside the domain and outside the outlets
+        const InsideDomain inside{ptr(ref_), config_.domainMin, config_.domainMax,
+                                  ptr(outletLo_), ptr(outletHi_), int(outletLo_.size())};
         dvec<int> perm(oldN);
-        auto endIt = thrust::copy_if(thrust::device, first, first + oldN, perm.begin(),
-                                     InsideDomain{ptr(ref_), config_.domainMin, config_.domainMax});
+        auto endIt = thrust::copy_if(thrust::device, first, first + oldN, perm.begin(), inside);
         const int n = int(endIt - perm.begin());
         perm.resize(n);
+        if (n < oldN)
+        {
+            logRemoved(inside, oldN - n);
+        }
 
         // Sort by cell (stable: ties keep their order, so a restart that starts
         // from a sorted state keeps it)
@@ -975,6 +1046,8 @@ private:
         {
             out[w].force = s[w].force;
             out[w].torque = s[w].torque;
+            out[w].normalForce = s[w].normalForce;
+            out[w].contacts = s[w].contacts;
             out[w].point = wallLoadPointsHost_[w].at(time_);
         }
         return out;
@@ -1250,6 +1323,10 @@ private:
     dvec<WallLoadPoint> wallLoadPoints_;
     std::vector<WallLoadPoint> wallLoadPointsHost_;
     int64_t wallLoadSteps_ = 0;
+
+    // Outlet boxes and the particles removed since the last takeRemoved()
+    dvec<Vec3> outletLo_, outletHi_;
+    std::vector<RemovedParticle> removed_;
 };
 
 } // namespace PD_BACKEND_NS

@@ -21,11 +21,32 @@ struct WallShare
 {
     Vec3 force;
     Vec3 torque;
+    //- The part of force along each contact's normal (the rest is friction)
+    Vec3 normalForce;
+    //- Contacts (a count, kept as a double so that sums over steps add up)
+    double contacts = 0;
 
     PD_HD void add(const Vec3& f, const Vec3& t)
     {
         force += f;
         torque += t;
+    }
+
+    //- One contact: its force, torque and normal component
+    PD_HD void addContact(const Vec3& f, const Vec3& t, const Vec3& fn)
+    {
+        force += f;
+        torque += t;
+        normalForce += fn;
+        contacts += 1;
+    }
+
+    PD_HD void addShare(const WallShare& q)
+    {
+        force += q.force;
+        torque += q.torque;
+        normalForce += q.normalForce;
+        contacts += q.contacts;
     }
 };
 
@@ -106,7 +127,7 @@ struct WallContact
         const Vec3 t = cross(arm, res.force) + res.rollingTorque;
         F += res.force;
         T += t;
-        if (load) load->add(res.force, t);
+        if (load) load->addContact(res.force, t, dot(res.force, k.normal) * k.normal);
     }
 
     //- Volumetric contact. ov.normal points from the wall into the particle;
@@ -136,7 +157,7 @@ struct WallContact
         const Vec3 t = cross(arm, res.force) + res.rollingTorque;
         F += res.force;
         T += t;
-        if (load) load->add(res.force, t);
+        if (load) load->addContact(res.force, t, dot(res.force, k.normal) * k.normal);
     }
 };
 
@@ -563,6 +584,8 @@ struct WallLoadBlocks
             const WallShare& q = share[size_t(i) * nWalls + w];
             s.force -= q.force;
             s.torque -= cross(pos[i] - O, q.force) + q.torque;
+            s.normalForce -= q.normalForce;
+            s.contacts += q.contacts;
         }
         blockSum[k] = s;
     }
@@ -583,11 +606,10 @@ struct WallLoadTotal
         WallShare s;
         for (int b = 0; b < nBlocks; ++b)
         {
-            s.force += blockSum[size_t(b) * nWalls + w].force;
-            s.torque += blockSum[size_t(b) * nWalls + w].torque;
+            s.addShare(blockSum[size_t(b) * nWalls + w]);
         }
         current[w] = s;
-        if (accumulate) sum[w].add(s.force, s.torque);
+        if (accumulate) sum[w].addShare(s);
     }
 };
 

@@ -24,7 +24,8 @@ InsertedParticles insertRandomFill
         existing[i].radius = obstacles.radius[i];
     }
     const std::vector<SphereSeed> seeds =
-        randomFill(ins.region, ins.sizes, ins.number, ins.seed, ins.gap, existing);
+        randomFill(ins.region, ins.sizes, ins.number, ins.seed, ins.gap, existing,
+                   ins.maxAttempts, ins.partial);
 
     const InsertionTypes& ut = ins.types;
     const SimulationConfig& config = system.config();
@@ -72,6 +73,12 @@ InsertedParticles insertRandomFill
             if (ins.fixedOrientation)
             {
                 q[i] = ins.orientation;
+            }
+            if (ins.fixedOrientation && ins.randomYaw)
+            {
+                // A uniform heading about the axis, after the given orientation
+                const Vec3 axis = ins.yawAxis / norm(ins.yawAxis);
+                q[i] = normalised(fromRotationVector((twoPi * uniform()) * axis) * ins.orientation);
             }
         }
     }

@@ -601,7 +601,8 @@ std::vector<SphereSeed> randomFill
     std::uint64_t seed,
     double gap,
     const std::vector<SphereSeed>& obstacles,
-    std::size_t maxAttempts
+    std::size_t maxAttempts,
+    bool partial
 )
 {
     sizes.validate();
@@ -666,6 +667,10 @@ std::vector<SphereSeed> randomFill
                 placed = true;
                 break;
             }
+        }
+        if (!placed && partial)
+        {
+            break;
         }
         if (!placed)
         {
