@@ -9,7 +9,7 @@
 // tolerance is refused, naming both partners, before the first step:
 //   - depth beyond depthTolerance (1 %) of the smaller diameter for a sphere
 //     with a sphere or a wall;
-//   - a volume beyond volumeTolerance (1e-3) of the smaller particle's
+//   - a volume beyond volumeTolerance (1 %) of the smaller particle's
 //     volume when a polyhedron is involved (face-to-face stacks that touch
 //     exactly give zero);
 //   - a centre on or behind a plane wall, whatever the overlap.
@@ -45,7 +45,7 @@ struct InsertionOverlap
 };
 
 constexpr double kInsertionDepthTolerance = 0.01;
-constexpr double kInsertionVolumeTolerance = 1e-3;
+constexpr double kInsertionVolumeTolerance = 1e-2;
 
 //- Every overlap beyond the tolerances (see top), in order of the inserted
 //  particles; empty when the insertion is clear
