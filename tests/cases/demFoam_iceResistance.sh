@@ -10,8 +10,8 @@
 #             within 0.5 % of the layer's weight 30 m g = 0.79461 N
 #   incline - gravity tilted 30 deg about y, mu = 0.3 < tan 30: the cube
 #             slides; at every sample after 0.02 s |friction| = mu |normal|
-#             within 1e-4 relative, and the normal load = m g cos 30 within
-#             0.5 %
+#             within 1e-4 relative, and after 0.05 s (the contact settled)
+#             the normal load = m g cos 30 within 0.5 %
 . "$(dirname "$0")/common.sh"
 
 kind="${1:?usage: demFoam_iceResistance.sh pushed|layer|incline}"
@@ -88,7 +88,10 @@ case "$kind" in
         ;;
     incline)
         checkRows 0.02 "F/N - 0.3" 1e-4 || fail "friction is not mu x normal force"
-        checkRows 0.02 "(N - $m*9.81*0.8660254)/($m*9.81*0.8660254)" 5e-3 \
+        # after the settling of the contact (the cube starts at the
+        # pushed case's overlap; at 0.02-0.04 s the normal load rings by
+        # up to 1.2 %, from 0.05 s it is m g cos 30 to 1e-5)
+        checkRows 0.05 "(N - $m*9.81*0.8660254)/($m*9.81*0.8660254)" 5e-3 \
             || fail "normal load is not m g cos 30"
         ;;
 esac
