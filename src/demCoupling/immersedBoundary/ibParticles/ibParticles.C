@@ -355,12 +355,18 @@ void Foam::ibParticles::checkInsideMesh() const
 {
     // A body whose centre has left the fluid mesh feels no fluid at all:
     // stop, naming it (every rank holds every body; reduce the search)
+    // One reduction for all bodies: a body is inside if some rank finds it
+    labelList found(bodies_.size(), 0);
+    forAll(bodies_, i)
+    {
+        found[i] = (mesh_.findCell(bodies_[i].position) >= 0) ? 1 : 0;
+    }
+    Pstream::listCombineGather(found, maxEqOp<label>());
+    Pstream::listCombineScatter(found);
     forAll(bodies_, i)
     {
         const ibBody& b = bodies_[i];
-        bool inside = (mesh_.findCell(b.position) >= 0);
-        reduce(inside, orOp<bool>());
-        if (!inside)
+        if (!found[i])
         {
             const boundBox bb(mesh_.points(), true);
             FatalErrorInFunction
