@@ -35,18 +35,9 @@ vc.closed_tank(case, LO, HI, N)
 vc.water_field(case, LO, HI, N, LEVEL)
 vc.vof_dicts(case, END, 5e-4, WRITE, maxCo=0.2, adjust=True)
 hc.dem_properties(case, DT_DEM, 2500, 2e-3,
-                  {"floor": ((0, 0, 0), (0, 0, 1)), "xmin": ((0, 0, 0), (1, 0, 0)),
-                   "xmax": (HI, (-1, 0, 0)), "ymin": ((0, 0, 0), (0, 1, 0)),
-                   "ymax": (HI, (0, -1, 0)), "top": (HI, (0, 0, -1))},
+                  vc.box_walls(LO, HI),
                   hc.random_fill("drop", 20, (0.004, 0.004, 0.04), (0.026, 0.026, 0.055)), E=2e6)
-hc.coupling(case, """couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel divided;
-smoothingModel none;
-forceModels (SchillerNaumann freeSurfacePressure);
-""")
+hc.coupling(case, vc.SPHERES_COUPLING)
 hc.run("blockMesh", case, "log.blockMesh")
 hc.run("demInterFoam", case, "log.demInterFoam", timeout=900)
 log = open(os.path.join(case, "log.demInterFoam")).read()

@@ -26,18 +26,9 @@ vc.closed_tank(case, LO, HI, N)
 vc.water_field(case, LO, HI, N, LEVEL)
 vc.vof_dicts(case, 0.25, 5e-4, 0.25)
 hc.dem_properties(case, 2.5e-5, 2500, 2e-3,
-                  {"floor": ((0, 0, 0), (0, 0, 1)), "xmin": ((0, 0, 0), (1, 0, 0)),
-                   "xmax": (HI, (-1, 0, 0)), "ymin": ((0, 0, 0), (0, 1, 0)),
-                   "ymax": (HI, (0, -1, 0)), "top": (HI, (0, 0, -1))},
+                  vc.box_walls(LO, HI),
                   hc.random_fill("drop", 200, (0.005, 0.005, 0.05), (0.055, 0.055, 0.075)), E=2e6)
-hc.coupling(case, """couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel divided;
-smoothingModel none;
-forceModels (SchillerNaumann freeSurfacePressure);
-""")
+hc.coupling(case, vc.SPHERES_COUPLING)
 hc.run("blockMesh", case, "log.blockMesh")
 hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
 rows = vc.read_water(case)

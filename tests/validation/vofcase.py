@@ -200,3 +200,20 @@ insertion
 output {{ format ascii; vtk false; }}
 """
     hc.foamfile(os.path.join(case, "constant/demProperties"), "demProperties", body)
+
+
+def box_walls(lo, hi):
+    """The six plane DEM walls of a closed box tank (hc.dem_properties format)."""
+    return {"floor": (lo, (0, 0, 1)), "xmin": (lo, (1, 0, 0)), "xmax": (hi, (-1, 0, 0)),
+            "ymin": (lo, (0, 1, 0)), "ymax": (hi, (0, -1, 0)), "top": (hi, (0, 0, -1))}
+
+
+# Unresolved spheres falling into water (vofWaterVolume, vofAdjustTimeStep)
+SPHERES_COUPLING = """couplingMode unresolved;
+formulation setI;
+momentumCoupling implicit;
+locateModel hinted;
+voidFractionModel divided;
+smoothingModel none;
+forceModels (SchillerNaumann freeSurfacePressure);
+"""
