@@ -41,8 +41,13 @@ from .foamDict import Dict
 def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1, blockSize=0.1,
                      iceThickness=0.1, sizeDistribution=None, shape="cuboid",
                      stemX=None, iceGap=0.05, scale=100.0, iceClass="IA",
-                     hullDict="type dummy;", cellSize=None):
-    if full:
+                     hullDict="type dummy;", cellSize=None, domain=None, velocity=None,
+                     snap=True, bowPoints=96, hullLevels=8):
+    if domain is not None:
+        (dmin, dmax, zw), cell = domain, 0.04
+        if stemX is None:
+            raise ValueError("makeBrashIceCase: with 'domain', give 'stemX' too")
+    elif full:
         dmin, dmax, zw, cell = (0.0, -1.0, 0.0), (10.0, 1.0, 5.0), 2.5, 0.02
         stemX = 3.0 if stemX is None else stemX
     else:
@@ -55,7 +60,7 @@ def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1,
         f.write("// makeBrashIceCase: the hull, its placement and the FSICR input\n"
                 f"hull {{ {hullDict} }}\n"
                 f"placement {{ stem ({stemX} 0 {zw}); bowDirection -x; }}\n"
-                "resolution { bowPoints 96; levels 8; }\n"
+                f"resolution {{ bowPoints {bowPoints}; levels {hullLevels}; }}\n"
                 f"fsicr {{ scale {scale}; iceClass {iceClass}; "
                 f"channelThickness {iceThickness * scale}; }}\n")
     _hull.main(["-case", case])
@@ -76,6 +81,8 @@ def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1,
                 f"shape {{ {shape_entry} }}\n"
                 f"porosity {porosity};\nseed {seed};\npacking {packing};\n"
                 "iceDensity 920;\nwaterDensity 1010;\n"
+                + ("" if velocity is None else
+                   f"velocity ({velocity[0]} {velocity[1]} {velocity[2]});\n") +
                 "iceMaterial { youngsModulus 2e9; poissonsRatio 0.3; }\n")
     ch = _channel.Channel(os.path.join(case, "system", "brashIceChannelDict"))
     ch.build()
@@ -84,7 +91,8 @@ def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1,
     with open(os.path.join(case, "system", "iceChannelMeshDict"), "w") as f:
         f.write(f"domain {{ min ({dmin[0]} {dmin[1]} {dmin[2]}); "
                 f"max ({dmax[0]} {dmax[1]} {dmax[2]}); }}\n"
-                f"cellSize {cell};\nwaterLevel {zw};\nhullLevel 1;\nfreeSurfaceLevel 1;\n")
+                f"cellSize {cell};\nwaterLevel {zw};\nhullLevel 1;\nfreeSurfaceLevel 1;\n"
+                f"snap {'true' if snap else 'false'};\n")
     _mesh.main(["-case", case])
     _fsicr.main(["-case", case])
     fs = {}

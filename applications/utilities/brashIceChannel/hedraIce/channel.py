@@ -204,7 +204,7 @@ def scaled(plan, area):
 TOP_KEYS = ["channel", "thickness", "blockThickness", "sizeDistribution", "sizeClasses",
             "shape", "porosity", "seed", "iceDensity", "waterDensity", "gap",
             "maxAttempts", "particleTypePrefix", "material", "iceMaterial", "output",
-            "packing", "yawSpread"]
+            "packing", "yawSpread", "velocity"]
 
 
 class Channel:
@@ -279,6 +279,10 @@ class Channel:
             if D > min(self.L, self.W):
                 d.error("sizeDistribution", f"size class {k} ({D:.4g} m) does not fit "
                         "in the channel")
+        # In a hull-fixed frame the ice drifts with the water: its initial velocity
+        self.velocity = None
+        if "velocity" in d:
+            self.velocity = tuple(d.get("velocity", "vector"))
         self.ice_material = None
         if "iceMaterial" in d:
             m = d.sub("iceMaterial")
@@ -523,8 +527,10 @@ class Channel:
                  "// include inside insertion { #include \"brashIce/insertion\" }\n"]
         for k, s in used:
             sh = self.shapes[k][s]
+            vel = "" if self.velocity is None else \
+                "    velocity        ({:.17g} {:.17g} {:.17g});\n".format(*self.velocity)
             lines.append(f"{sh['name']}\n{{\n    type            list;\n"
-                         f"    particleType    {sh['name']};\n    particles\n    (\n")
+                         f"    particleType    {sh['name']};\n{vel}    particles\n    (\n")
             for b in self.blocks:
                 if (b.cls, b.shape) != (k, s):
                     continue

@@ -17,11 +17,12 @@ import os
 from .foamDict import Dict, header
 
 KEYS = ["domain", "cellSize", "waterLevel", "freeSurfaceBand", "freeSurfaceLevel",
-        "hullLevel", "hullDistance", "locationInMesh", "hullFile"]
+        "hullLevel", "hullDistance", "locationInMesh", "hullFile", "snap"]
 
 
 def write_mesh_setup(case, dmin, dmax, cell, water_level, band=None, fs_level=1,
-                     hull_level=2, hull_distance=None, location=None, hull_file="hull.stl"):
+                     hull_level=2, hull_distance=None, location=None, hull_file="hull.stl",
+                     snap=True):
     sysd = os.path.join(case, "system")
     os.makedirs(sysd, exist_ok=True)
     n = [max(1, int(round((dmax[i] - dmin[i]) / cell))) for i in range(3)]
@@ -59,7 +60,7 @@ def write_mesh_setup(case, dmin, dmax, cell, water_level, band=None, fs_level=1,
         f.write(header("dictionary", "snappyHexMeshDict", "system"))
         f.write(f"""// iceChannelMesh: hull patch `hull`, refined near the hull and at the free surface
 castellatedMesh true;
-snap            true;
+snap            {"true" if snap else "false"};
 addLayers       false;
 
 geometry
@@ -204,7 +205,8 @@ def main(argv=None):
         hull_level=d.get("hullLevel", int, default=2, min=0, max=8),
         hull_distance=d.get("hullDistance", float, default=2 * cell, min=0),
         location=d.get("locationInMesh", "vector") if "locationInMesh" in d else None,
-        hull_file=d.get("hullFile", str, default="hull.stl"))
+        hull_file=d.get("hullFile", str, default="hull.stl"),
+        snap=d.get("snap", bool, default=True))
     print(f"iceChannelMesh: blockMesh {n[0]} x {n[1]} x {n[2]} cells of {cell} m; "
           "wrote system/{blockMeshDict,surfaceFeatureExtractDict,snappyHexMeshDict}")
     return 0
