@@ -11,17 +11,22 @@ def _rows(path):
             if l.strip() and not l.startswith("#")]
 
 
-def balance(case, dt):
-    """(rows of (t, W, out, W + out), W0); out is the cumulative outflow."""
+def balance(case, dt, fluxes=("waterOut",)):
+    """(rows of (t, W, out, W + out), W0); out is the cumulative outflow
+    through the patches of the surfaceFieldValue function objects named in
+    `fluxes` (each the sum of alphaPhi0.water over its patch; inflow counts
+    negative)."""
     W = []
     base = os.path.join(case, "postProcessing", "demInterFoam")
     for t0 in sorted(os.listdir(base), key=float):
         W += _rows(os.path.join(base, t0, "waterVolume.dat"))
     flux = {}
-    base = os.path.join(case, "postProcessing", "waterOut")
-    for t0 in sorted(os.listdir(base), key=float):
-        for r in _rows(os.path.join(base, t0, "surfaceFieldValue.dat")):
-            flux[round(r[0]/dt)] = r[1]
+    for name in fluxes:
+        base = os.path.join(case, "postProcessing", name)
+        for t0 in sorted(os.listdir(base), key=float):
+            for r in _rows(os.path.join(base, t0, "surfaceFieldValue.dat")):
+                k = round(r[0]/dt)
+                flux[k] = flux.get(k, 0.0) + r[1]
     # W0: the volume before the first step (the first row is after it, so
     # add back that step's outflow: none, the water starts away from the top)
     W0 = W[0][1]
