@@ -19,6 +19,9 @@ with brashIceBuilder (the same rebuild from the written files satisfies the
 overlap, draft and slab checks) this closes the chain builder -> files ->
 engine.  Checked to fail: with the builder's engine-frame sort switched off,
 the plate STLs no longer match the engine's body frame (FAILED).
+The plates are built with `velocity (0.5 0.1 0)` (the ice's drift in a
+hull-fixed frame), the cuboids without: after the one step every block's
+horizontal velocity must be that, to 1e-12 m/s (no contact acts in the step).
 Needs demFoam on PATH (./Allwmake; or source /work/main/etc/bashrc).
 """
 import os
@@ -49,7 +52,9 @@ iceDensity 920;
 waterDensity 1010;
 iceMaterial { youngsModulus 2e9; poissonsRatio 0.3; }
 output { include constant/brashIce; }
+%s
 """
+DRIFT = {"cuboid": None, "plate": (0.5, 0.1, 0.0)}
 
 
 def demProperties():
@@ -96,7 +101,8 @@ def main():
                                 dir=os.environ.get("HEDRA_TEST_TMP"))
         os.makedirs(os.path.join(case, "system"))
         with open(os.path.join(case, "system", "brashIceChannelDict"), "w") as f:
-            f.write(CHANNEL % shape)
+            v = DRIFT[shape]
+            f.write(CHANNEL % (shape, "" if v is None else "velocity (%g %g %g);" % v))
         with open(os.path.join(case, "system", "iceHullDict"), "w") as f:
             f.write("hull { type dummy; }\nplacement { stem (1.5 0 0.5); bowDirection -x; }\n")
         with open(os.path.join(case, "system", "controlDict"), "w") as f:
@@ -124,6 +130,16 @@ def main():
         if len(want) != len(got) or max(d1, d2) > 1e-9:
             fails.append(f"{shape}: engine and builder disagree by {max(d1, d2):.3e} m "
                          f"({len(got)} against {len(want)} vertices)")
+        sys.path.insert(0, os.path.join(HERE, "..", "..", "tutorials", "demInterFoam", "common"))
+        import demState
+        st = demState.read_state(os.path.join(case, "1e-05", "polyDEM", "state"))
+        want_v = DRIFT[shape] or (0.0, 0.0, 0.0)
+        dv = max(max(abs(p["vx"] - want_v[0]), abs(p["vy"] - want_v[1]))
+                 for p in st["particles"])
+        print(f"{shape}: horizontal velocity after one step off {want_v[:2]} by at most "
+              f"{dv:.2e} m/s over {len(st['particles'])} blocks (tolerance 1e-12)")
+        if len(st["particles"]) != len(blocks) or dv > 1e-12:
+            fails.append(f"{shape}: drift velocity off by {dv:.3e} m/s")
         with open(os.path.join(case, "log.demFoam")) as f:
             log = f.read()
         if "hull" not in log:
