@@ -13,7 +13,10 @@ leaves the fluid mesh stops the run naming it:
      -> refused, naming adjustTimeStep
   6. a body whose centre leaves the mesh (used to get zero force silently)
      -> stopped, naming the body
-  7. the unchanged case runs (the checks refuse nothing valid)
+  7. closedSurface true with integralForcing false (explicit interface) ->
+     refused, naming both
+  8. the unchanged case runs (the checks refuse nothing valid), and so does
+     it with closedSurface true
 Each bad run must fail (non-zero exit, no signal) with the strings listed.
 """
 import os
@@ -47,14 +50,20 @@ tests = [
      ["nCorrections", ">= 1", "ibProperties"]),
     ("adjustTimeStep", IB, INSIDE, "adjustTimeStep yes;\nmaxCo 0.5;\n",
      ["adjustTimeStep", "controlDict", "demIbFoam"]),
+    ("closedSurfaceNoIntegral",
+     IB.replace("interface penalised; integralForcing true;",
+                "interface explicit; integralForcing false; closedSurface true;"), INSIDE, "",
+     ["closedSurface true needs integralForcing true", "ibProperties"]),
     ("bodyOutsideMesh", IB, OUTSIDE, "",
      ["Body 0 has left the fluid mesh", "centre (0.015 0.015 0.045)"]),
 ]
-good = [("valid", IB, INSIDE, "", [])]
+good = [("valid", IB, INSIDE, "", []),
+        ("validClosed", IB.replace("integralThreshold 0.5;", "integralThreshold 0.5; closedSurface true;"),
+         INSIDE, "", [])]
 
 results = []
 for name, ib, position, control, expect in tests + good:
-    mustFail = name != "valid"
+    mustFail = not name.startswith("valid")
     case = hc.workdir(f"ibbad-{name}")
     hc.block_mesh(case, (0, 0, 0), (0.03, 0.03, 0.03), (6, 6, 6),
                   {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
