@@ -1,0 +1,417 @@
+#!/usr/bin/env python3
+"""Writes the brashIceChannel case (demInterFoam + polyDEM, unresolved mode):
+the seed report's dummy hull held fixed in a brash-ice channel, water and
+ice flowing past it at the towing speed (hull-fixed frame).
+
+Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
+                   [-demStep DT] [-dir DIR]
+
+  (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
+              (0.025 m at the free surface and the hull), ~120 blocks, 3 s
+  -test       2.4 m x 0.6 m, 0.4 m water + 0.4 m air, 0.05 m cells, ~25
+              blocks, 0.3 s
+              (CTest smoke run)
+  -full       the report's 10 m x 2 m, 2.5 m water + 2.5 m air, 0.02 m
+              cells, CFD step 1e-3 s, ~350 blocks, 6 s (a GPU and many
+              cores: not run here)
+  -openWater  the same case without ice (the open-water resistance)
+  -speed U    towing speed [m/s] (default 0.74, the report's)
+  -stiffness K  volumetric contact stiffness [N/m3]: -full 2e10 = E/t (E
+              2e9 Pa over the 0.1 m block thickness), the reduced sizes 2e9
+  -demStep DT DEM step [s]: -full 1e-5 (the report's), reduced 4e-5
+
+What the hull-fixed frame means for the boundaries:
+  inlet (x min)   water in at U below the level, air above (alpha from
+                  setFields on the patch faces);
+  outlet (x max)  outletPhaseMeanVelocity (the water leaves at mean speed U)
+                  and variableHeightFlowRate for alpha, as OpenFOAM's DTCHull
+                  towing-tank tutorial;
+  sides, bottom   slip: the tank's walls move with the water in this frame,
+                  so they carry no boundary layer; in the DEM they are
+                  frictionless planes for the same reason;
+  atmosphere      totalPressure 0;
+  hull            no-slip wall; in the DEM the same STL, steel, ice-hull
+                  friction 0.1.
+"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.environ.get("HEDRA_DIR", os.path.normpath(os.path.join(HERE, "..", "..", "..")))
+sys.path.insert(0, os.path.join(ROOT, "applications", "utilities", "brashIceChannel"))
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+from hedraIce.case import makeBrashIceCase  # noqa: E402
+
+HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
+  Hedra tutorial: brashIceChannel (demInterFoam), written by makeCase.py
+\\*---------------------------------------------------------------------------*/
+FoamFile
+{{
+    version     2.0;
+    format      ascii;
+    class       {cls};
+    object      {obj};
+}}
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+"""
+
+RHO_W, NU_W = 1010.0, 1.0e-6       # the report's water
+RHO_A, NU_A = 1.2, 1.48e-5          # and air
+ICE_THICKNESS = 0.1                 # [m], blocks 0.1 m thick, plan 0.08-0.12 m
+
+SIZES = {
+    # domain min, max, water level, stem x, cell, CFD step, DEM step, contact
+    # stiffness, end, write. The report's ice (E 2e9 Pa) is k_v = E / t = 2e10
+    # N/m3 with its DEM step 1e-5 s (-full); the reduced sizes take a tenth
+    # of it and a 4x larger step (README, "Contact stiffness")
+    "test": dict(domain=((0.0, -0.3, 0.0), (2.4, 0.3, 0.8), 0.4), stemX=0.8,
+                 cell=0.05, dt=4e-3, dtDem=4e-5, kv=2e9, end=0.3, write=0.1),
+    "default": dict(domain=((0.0, -0.5, 0.0), (4.0, 0.5, 1.0), 0.6), stemX=2.2,
+                    cell=0.05, dt=4e-3, dtDem=4e-5, kv=2e9, end=3.0, write=0.25),
+    "full": dict(domain=((0.0, -1.0, 0.0), (10.0, 1.0, 5.0), 2.5), stemX=3.0,
+                 cell=0.02, dt=1e-3, dtDem=1e-5, kv=2e10, end=6.0, write=0.5),
+}
+
+
+def write(path, obj, body, cls="dictionary"):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(HEADER.format(cls=cls, obj=obj) + body +
+                "\n// ************************************************************************* //\n")
+
+
+def main():
+    size, d, openWater, U, kv, dtDem = "default", "case", False, 0.74, None, None
+    args = sys.argv[1:]
+    while args:
+        a = args.pop(0)
+        if a in ("-test", "-full"):
+            size = a[1:]
+        elif a == "-openWater":
+            openWater = True
+        elif a == "-speed":
+            U = float(args.pop(0))
+        elif a == "-stiffness":
+            kv = float(args.pop(0))
+        elif a == "-demStep":
+            dtDem = float(args.pop(0))
+        elif a == "-dir":
+            d = args.pop(0)
+        else:
+            sys.exit(f"makeCase.py: unknown option {a} "
+                     "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -dir DIR)")
+    if not (0 < U < 5):
+        sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
+    P = SIZES[size]
+    (dmin, dmax, zw) = P["domain"]
+    info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
+                            cellSize=P["cell"], iceThickness=ICE_THICKNESS,
+                            velocity=(U, 0.0, 0.0), snap=False,
+                            bowPoints=32, hullLevels=2)
+    ice = info["ice"]
+    # The stem is at the waterline at stemX; the hull runs 1.2 m aft of it
+    hullEnd = P["stemX"] + 1.2
+    kv = P["kv"] if kv is None else kv
+    dt, dtDem = P["dt"], (P["dtDem"] if dtDem is None else dtDem)
+    nDem = round(dt / dtDem)
+    if abs(nDem * dtDem - dt) > 1e-9 * dt:
+        sys.exit(f"makeCase.py: -demStep {dtDem:g}: the CFD step {dt:g} s must be a whole "
+                 "number of DEM steps")
+
+    flux_fos = "".join(f"""    water_{patch}
+    {{
+        type            surfaceFieldValue;
+        libs            (fieldFunctionObjects);
+        writeControl    timeStep;
+        writeInterval   1;
+        log             false;
+        writeFields     false;
+        regionType      patch;
+        name            {patch};
+        operation       sum;
+        fields          (alphaPhi0.water);
+    }}
+""" for patch in ("inlet", "outlet", "atmosphere"))
+    write(f"{d}/system/controlDict", "controlDict", f"""application     demInterFoam;
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         {P['end']:g};
+deltaT          {dt:g};
+writeControl    adjustableRunTime;
+writeInterval   {P['write']:g};
+purgeWrite      0;
+writeFormat     ascii;          // postProcess.py reads alpha.water, C and V
+writePrecision  12;
+writeCompression off;
+timeFormat      general;
+timePrecision   8;
+runTimeModifiable false;
+adjustTimeStep  no;             // a whole number of DEM steps per fluid step
+maxCo           0.5;
+maxAlphaCo      0.5;
+maxDeltaT       {dt:g};
+
+functions
+{{
+    // The resistance of the hull: the ice load on the DEM wall 'hull' (the
+    // same STL as the fluid patch) plus the fluid force on the patch 'hull',
+    // along the flow (+x: the water and the ice push the hull downstream)
+    resistance
+    {{
+        type            iceResistance;
+        libs            (demFunctionObjects);
+        wall            hull;
+        patches         (hull);
+        direction       (1 0 0);
+        CofR            ({P['stemX']:g} 0 {zw:g});
+        nBatches        10;
+        {'' if openWater else 'openWaterFile   "../openWater/postProcessing/resistance/0/resistanceMean.dat";'}
+    }}
+    // The water through each open boundary (with the solver's own
+    // postProcessing/demInterFoam/<t0>/waterVolume.dat: the water balance)
+{flux_fos}}}
+""")
+    write(f"{d}/system/decomposeParDict", "decomposeParDict",
+          "// Allrun -np N sets numberOfSubdomains and n (N 1 1): slices along the\n"
+          "// flow (scotch and metis are stubs in Debian's OpenFOAM, docs/install.md)\n"
+          "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n")
+    write(f"{d}/system/fvSchemes", "fvSchemes", """ddtSchemes { default Euler; }
+gradSchemes { default Gauss linear; }
+divSchemes
+{
+    div(rhoPhi,U)  Gauss linearUpwind grad(U);
+    div(phi,alpha)  Gauss vanLeer;
+    div(phirb,alpha) Gauss linear;
+    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;
+}
+laplacianSchemes { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes { default corrected; }
+wallDist { method meshWave; }
+""")
+    write(f"{d}/system/fvSolution", "fvSolution", """solvers
+{
+    "alpha.water.*"
+    {
+        nAlphaCorr 2; nAlphaSubCycles 1; cAlpha 1;
+        // 20 limiter iterations keep alpha in [0, 1] among polyhedra
+        // (docs/models.md, "MULES with particles")
+        MULESCorr yes; nLimiterIter 20;
+        solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0;
+    }
+    "pcorr.*" { solver GAMG; smoother DIC; tolerance 1e-8; relTol 0; }
+    p_rgh { solver GAMG; smoother DIC; tolerance 1e-7; relTol 0.01; }
+    p_rghFinal { $p_rgh; relTol 0; }
+    "U.*" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0; }
+}
+PIMPLE
+{
+    momentumPredictor no;
+    nOuterCorrectors 1;
+    nCorrectors 2;
+    nNonOrthogonalCorrectors 1;     // snappyHexMesh cells at the hull
+}
+relaxationFactors { equations { ".*" 1; } }
+""")
+    write(f"{d}/system/setFieldsDict", "setFieldsDict", f"""defaultFieldValues ( volScalarFieldValue alpha.water 0 );
+
+// Water below the level, in the cells and on the inlet's faces (the inlet's
+// fixedValue alpha); cells that ice fills keep the level's water fraction
+// (docs/models.md)
+regions
+(
+    boxToCell
+    {{
+        box (-1e3 -1e3 -1e3) (1e3 1e3 {zw:g});
+        fieldValues ( volScalarFieldValue alpha.water 1 );
+    }}
+    boxToFace
+    {{
+        box (-1e3 -1e3 -1e3) (1e3 1e3 {zw:g});
+        fieldValues ( volScalarFieldValue alpha.water 1 );
+    }}
+);
+""")
+    write(f"{d}/constant/transportProperties", "transportProperties", f"""phases (water air);
+water {{ transportModel Newtonian; nu {NU_W:g}; rho {RHO_W:g}; }}
+air {{ transportModel Newtonian; nu {NU_A:g}; rho {RHO_A:g}; }}
+sigma 0.07;
+""")
+    write(f"{d}/constant/turbulenceProperties", "turbulenceProperties", "simulationType laminar;\n")
+    write(f"{d}/constant/g", "g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
+          cls="uniformDimensionedVectorField")
+    write(f"{d}/constant/couplingProperties", "couplingProperties", f"""couplingMode        unresolved;     // blocks of 2-4 cells: semi-resolved with exactOverlap
+formulation         setI;
+momentumCoupling    implicit;
+demStepsPerFluidStep {nDem};
+locateModel         hinted;
+voidFractionModel   exactOverlap;   // the exact overlap of each block with each cell
+// Semi-resolved: the blocks' solid fraction (and exchange fields) spread
+// over about a quarter of a block. Unsmoothed, cells inside a block sit at
+// alphaMin 0.1, where the Gidaspow drag is ~1e3 times that of the open
+// layer and the air a block displaces as it heaves leaves at ~10 v_block:
+// the default size blew up at 0.75 s (README, "Coupling")
+smoothingModel      implicitDiffusion;
+implicitDiffusionCoeffs {{ lengthScale {0.5 * P['cell']:g}; }}
+// Drag of a dense layer (Ergun / Wen-Yu) and the buoyancy of each block's
+// own submerged volume (freeSurfacePressure, exact for a flat surface at any
+// block/cell size ratio)
+forceModels         (Gidaspow freeSurfacePressure);
+""")
+
+    # Fields. U: the towing speed everywhere at the start (water and air
+    # move past the hull), as OpenFOAM's DTCHull
+    Uv = f"({U:g} 0 0)"
+    write(f"{d}/0.orig/U", "U", f"""dimensions [0 1 -1 0 0 0 0];
+internalField uniform {Uv};
+boundaryField
+{{
+    inlet       {{ type fixedValue; value uniform {Uv}; }}
+    outlet      {{ type outletPhaseMeanVelocity; alpha alpha.water; Umean {U:g}; value uniform {Uv}; }}
+    atmosphere  {{ type pressureInletOutletVelocity; tangentialVelocity uniform {Uv}; value uniform {Uv}; }}
+    sides       {{ type slip; }}
+    bottom      {{ type slip; }}
+    hull        {{ type noSlip; }}
+}}
+""", cls="volVectorField")
+    write(f"{d}/0.orig/p_rgh", "p_rgh", """dimensions [1 -1 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    inlet       { type fixedFluxPressure; value uniform 0; }
+    outlet      { type zeroGradient; }
+    atmosphere  { type totalPressure; p0 uniform 0; value uniform 0; }
+    sides       { type fixedFluxPressure; value uniform 0; }
+    bottom      { type fixedFluxPressure; value uniform 0; }
+    hull        { type fixedFluxPressure; value uniform 0; }
+}
+""", cls="volScalarField")
+    write(f"{d}/0.orig/alpha.water", "alpha.water", """dimensions [0 0 0 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    inlet       { type fixedValue; value uniform 0; }
+    outlet      { type variableHeightFlowRate; lowerBound 0; upperBound 1; value uniform 0; }
+    atmosphere  { type inletOutlet; inletValue uniform 0; value uniform 0; }
+    sides       { type zeroGradient; }
+    bottom      { type zeroGradient; }
+    hull        { type zeroGradient; }
+}
+""", cls="volScalarField")
+
+    # DEM. Side walls and floor: frictionless (they move with the water in
+    # this frame); the hull: the fluid's STL. Ice leaves through the outlet
+    # box and enters through the inflow region at the inlet. The outlet box
+    # lies beyond the fluid mesh (from a block's bounding radius past the
+    # outlet patch): a block is removed only once no part of it is in a
+    # cell. Removed inside the mesh, its volume turned to fluid in one step,
+    # and that d(eps)/dt kicked every block (total vertical fluid force on
+    # the 120 blocks of the default size swinging from -420 to 2300 N,
+    # weight 1080 N, at each removal; README, "Ice inflow and outflow").
+    t = ICE_THICKNESS
+    r = 920.0 / RHO_W
+    zlo, zhi = zw - r * t, zw + (1 - r) * t
+    y0, y1 = dmin[1], dmax[1]
+    outletX = dmax[0] + 0.1      # > the largest bounding radius, 0.099 m (0.12 x 0.12 x 0.1)
+    insertion = "" if openWater else f"""    #include "brashIce/insertion"
+    // The channel ahead of the hull is built by brashIceChannel (its porosity);
+    // the inflow region at the inlet tops it up as the ice drifts away. It
+    // places blocks clear of their bounding spheres, so it reaches a lower
+    // solid fraction than the builder (docs/demProperties.md, "Inflow")
+    inlet
+    {{
+        type            inflow;
+        particleType    iceC1;
+        region          {{ type box; min ({dmin[0]:g} {y0 + 0.06:g} {zlo:.6g}); max ({dmin[0] + 0.25:g} {y1 - 0.06:g} {zhi:.6g}); }}
+        solidFraction   0.3;
+        velocity        {Uv};
+        randomYaw       true;
+        interval        {max(0.02, round(0.25 / U / 4, 3)):g};
+        seed            7;
+        time            {0.12 / U:.4g};     // once the built channel has moved on
+    }}
+"""
+    write(f"{d}/constant/demProperties", "demProperties", f"""device          cpu;            // cpu | cuda
+
+timeStep        {dtDem:g};      // [s]; {nDem} DEM steps per fluid step
+
+gravity         (0 0 -9.81);
+
+domain                          // blocks that stray are removed
+{{
+    min         ({dmin[0] - 0.5:g} {dmin[1] - 0.05:g} {dmin[2] - 0.5:g});
+    max         ({dmax[0] + 0.5:g} {dmax[1] + 0.05:g} {dmax[2] + 0.5:g});
+}}
+
+outlets
+{{
+    downstream  {{ min ({outletX:g} {y0 - 0.05:g} {dmin[2] - 0.5:g}); max ({dmax[0] + 0.5:g} {y1 + 0.05:g} {dmax[2] + 0.5:g}); }}
+}}
+
+// Face-to-face contact of two 0.1 m blocks: F = k_v A delta, i.e. a spring
+// k_v A; k_v = E / t = 2e9 Pa / 0.1 m = 2e10 N/m3 gives the axial stiffness
+// E A / t of the report's ice (README, "Contact stiffness")
+contactModel
+{{
+    law                         overlapVolume;
+    volumetricStiffness         {kv:g};     // [N/m3]
+    tangentialStiffnessRatio    0.2857;
+}}
+
+materials
+{{
+    #include "brashIce/materials"
+    steel {{ youngsModulus 2.1e11; poissonsRatio 0.3; density 7800; }}
+    tank  {{ youngsModulus 2.1e11; poissonsRatio 0.3; density 7800; }}
+}}
+
+// The report: ice-ice 0.3, ice-structure 0.1; the tank walls move with the
+// water in the hull-fixed frame: no friction there
+interactions
+{{
+    default     {{ restitution 0.3; friction 0.3; }}
+    iceOnHull   {{ materials (ice steel); restitution 0.3; friction 0.1; }}
+    iceOnTank   {{ materials (ice tank); restitution 0.3; friction 0; }}
+}}
+
+particleTypes
+{{
+    #include "brashIce/particleTypes"
+}}
+
+walls
+{{
+    hull    {{ type mesh; file "hull.stl"; material steel; }}
+    floor   {{ type plane; point (0 0 {dmin[2]:g}); normal (0 0 1); material tank; }}
+    right   {{ type plane; point (0 {y0:g} 0); normal (0 1 0); material tank; }}
+    left    {{ type plane; point (0 {y1:g} 0); normal (0 -1 0); material tank; }}
+}}
+
+insertion
+{{
+{insertion}}}
+
+output
+{{
+    format      ascii;
+    vtk         true;
+}}
+""")
+    with open(f"{d}/case.info", "w") as f:
+        for k, v in dict(size=size, openWater=int(openWater), speed=U, stiffness=kv,
+                         xmin=dmin[0], xmax=dmax[0], ymin=dmin[1], ymax=dmax[1],
+                         zmin=dmin[2], zmax=dmax[2], waterLevel=zw, stemX=P["stemX"],
+                         hullEnd=hullEnd, cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
+                         blocks=ice["blocks"], porosity=ice["porosity"],
+                         iceThickness=ICE_THICKNESS, rhoWater=RHO_W,
+                         fsicrModel=info["fsicr"]["Rmodel"]).items():
+            f.write(f"{k} {v}\n")
+    print(f"makeCase.py {size}{' openWater' if openWater else ''}: U {U:g} m/s, "
+          f"{0 if openWater else ice['blocks']} blocks (porosity {ice['porosity']:.3f}), "
+          f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s")
+
+
+main()
