@@ -29,16 +29,13 @@ import math
 import os
 import hedracase as hc
 import liggghtscase as lc
+from dragLaws import cd_sn
 
 rho, nu, rhoP, d, g = 1000.0, 1e-6, 2500.0, 5e-4, 9.81
 Vp = math.pi / 6 * d**3
 dtDem = 5e-6
 centre = (0.0125, 0.0125, 0.085)
 box = ((0, 0, 0), (0.03, 0.03, 0.1))
-
-
-def cd_sn(Re):
-    return 24 / Re * (1 + 0.15 * Re**0.687) if Re < 1000 else 0.44
 
 
 def terminal():

@@ -20,21 +20,10 @@ Measured: mean settling velocity over the last 0.05 s of 0.3 s.
 import math
 import sys
 import hedracase as hc
+from dragLaws import cd_sn, cd_hl
 
 rho, nu, rhoP, d, g = 1000.0, 1e-6, 2500.0, 5e-4, 9.81
 Vp = math.pi / 6 * d**3
-
-
-def cd_sn(Re):
-    return 24 / Re * (1 + 0.15 * Re**0.687) if Re < 1000 else 0.44
-
-
-def cd_hl(Re, phi):
-    A = math.exp(2.3288 - 6.4581 * phi + 2.4486 * phi**2)
-    B = 0.0964 + 0.5565 * phi
-    C = math.exp(4.905 - 13.8944 * phi + 18.4222 * phi**2 - 10.2599 * phi**3)
-    D = math.exp(1.4681 + 12.2584 * phi - 20.7322 * phi**2 + 15.8855 * phi**3)
-    return 24 / Re * (1 + A * Re**B) + C / (1 + D / Re)
 
 
 def terminal(cd):

@@ -35,6 +35,7 @@ import math
 import hedracase as hc
 import vofcase as vc
 from scipy.optimize import brentq
+from dragLaws import cd_sn, cd_hl
 
 LO, HI, N = (0.0, 0.0, 0.0), (0.02, 0.02, 0.08), (4, 4, 16)
 DX = 0.005
@@ -43,18 +44,6 @@ d, RHO_P, G = 1e-3, 2500.0, 9.81
 DROP = 0.01                                  # bottom of the sphere above the surface
 centre = (0.0103, 0.0096, LEVEL + DROP + d / 2)
 END, DT = 0.25, 1e-3
-
-
-def cd_sn(Re):
-    return 24 / Re * (1 + 0.15 * Re**0.687) if Re < 1000 else 0.44
-
-
-def cd_hl(Re, phi):
-    A = math.exp(2.3288 - 6.4581 * phi + 2.4486 * phi**2)
-    B = 0.0964 + 0.5565 * phi
-    C = math.exp(4.905 - 13.8944 * phi + 18.4222 * phi**2 - 10.2599 * phi**3)
-    D = math.exp(1.4681 + 12.2584 * phi - 20.7322 * phi**2 + 15.8855 * phi**3)
-    return 24 / Re * (1 + A * Re**B) + C / (1 + D / Re)
 
 
 def terminal(cd):
