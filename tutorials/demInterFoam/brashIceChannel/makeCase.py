@@ -42,6 +42,7 @@ ROOT = os.environ.get("HEDRA_DIR", os.path.normpath(os.path.join(HERE, "..", "..
 sys.path.insert(0, os.path.join(ROOT, "applications", "utilities", "brashIceChannel"))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 from hedraIce.case import makeBrashIceCase  # noqa: E402
+from twoPhaseDictionaries import FV_SCHEMES, write_laminar_gravity  # noqa: E402
 
 HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
   Hedra tutorial: brashIceChannel (demInterFoam), written by makeCase.py
@@ -178,20 +179,7 @@ functions
           "// Allrun -np N sets numberOfSubdomains and n (N 1 1): slices along the\n"
           "// flow (scotch and metis are stubs in Debian's OpenFOAM, docs/install.md)\n"
           "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n")
-    write(f"{d}/system/fvSchemes", "fvSchemes", """ddtSchemes { default Euler; }
-gradSchemes { default Gauss linear; }
-divSchemes
-{
-    div(rhoPhi,U)  Gauss linearUpwind grad(U);
-    div(phi,alpha)  Gauss vanLeer;
-    div(phirb,alpha) Gauss linear;
-    div(((rho*nuEff)*dev2(T(grad(U))))) Gauss linear;
-}
-laplacianSchemes { default Gauss linear corrected; }
-interpolationSchemes { default linear; }
-snGradSchemes { default corrected; }
-wallDist { method meshWave; }
-""")
+    write(f"{d}/system/fvSchemes", "fvSchemes", FV_SCHEMES + "wallDist { method meshWave; }\n")
     write(f"{d}/system/fvSolution", "fvSolution", """solvers
 {
     "alpha.water.*"
@@ -240,9 +228,7 @@ water {{ transportModel Newtonian; nu {NU_W:g}; rho {RHO_W:g}; }}
 air {{ transportModel Newtonian; nu {NU_A:g}; rho {RHO_A:g}; }}
 sigma 0.07;
 """)
-    write(f"{d}/constant/turbulenceProperties", "turbulenceProperties", "simulationType laminar;\n")
-    write(f"{d}/constant/g", "g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
-          cls="uniformDimensionedVectorField")
+    write_laminar_gravity(d, write)
     write(f"{d}/constant/couplingProperties", "couplingProperties", f"""couplingMode        unresolved;     // blocks of 2-4 cells: semi-resolved with exactOverlap
 formulation         setI;
 momentumCoupling    implicit;

@@ -1,11 +1,12 @@
-"""The two-phase (water/air) dictionaries the demInterFoam dam-break
-tutorials share: schemes, solvers (MULES with 20 limiter iterations, no
+"""The two-phase (water/air) dictionaries the demInterFoam tutorials share:
+the dam breaks take all of them (write_two_phase_dictionaries), the
+brash-ice channel its schemes (FV_SCHEMES) and write_laminar_gravity:
+schemes, solvers (MULES with 20 limiter iterations, no
 rest-state start of p_rgh), the phases, laminar flow, gravity. write is the
 tutorial's own writer (its file header names the tutorial)."""
 
 
-def write_two_phase_dictionaries(case, write):
-    write(f"{case}/system/fvSchemes", "fvSchemes", """ddtSchemes { default Euler; }
+FV_SCHEMES = """ddtSchemes { default Euler; }
 gradSchemes { default Gauss linear; }
 divSchemes
 {
@@ -17,7 +18,18 @@ divSchemes
 laplacianSchemes { default Gauss linear corrected; }
 interpolationSchemes { default linear; }
 snGradSchemes { default corrected; }
-""")
+"""
+
+
+def write_laminar_gravity(case, write):
+    """Laminar flow and gravity -z (every demInterFoam tutorial)."""
+    write(f"{case}/constant/turbulenceProperties", "turbulenceProperties", "simulationType laminar;\n")
+    write(f"{case}/constant/g", "g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
+          cls="uniformDimensionedVectorField")
+
+
+def write_two_phase_dictionaries(case, write):
+    write(f"{case}/system/fvSchemes", "fvSchemes", FV_SCHEMES)
     write(f"{case}/system/fvSolution", "fvSolution", """solvers
 {
     "alpha.water.*"
@@ -55,6 +67,4 @@ water { transportModel Newtonian; nu 1e-06; rho 1000; }
 air { transportModel Newtonian; nu 1.48e-05; rho 1; }
 sigma 0.07;
 """)
-    write(f"{case}/constant/turbulenceProperties", "turbulenceProperties", "simulationType laminar;\n")
-    write(f"{case}/constant/g", "g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
-      cls="uniformDimensionedVectorField")
+    write_laminar_gravity(case, write)
