@@ -1172,7 +1172,8 @@ private:
                 k.planeMr = rolling ? ptr(planeMr_) : nullptr;
                 k.wallContactCount = ptr(wallContactCount_);
                 k.shares = shares;
-                SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(ownForce_), ptr(ownTorque_)}.run(n);
+                serialSums_.resize(n);
+                SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(serialSums_)}.run(n);
                 return;
             }
 #endif
@@ -1305,6 +1306,9 @@ private:
     dvec<unsigned char> pairTouching_;
     dvec<Vec3> pairForce_, pairTorqueA_, pairTorqueB_, ownForce_, ownTorque_;
     dvec<int> contactCount_, wallContactCount_;
+#ifndef __CUDACC__
+    dvec<ForceSum> serialSums_;   //!< the one-thread force pass's accumulators
+#endif
 
     // Plane candidates (CSR) and their springs
     dvec<int> planeStart_, planePlane_;
