@@ -908,6 +908,8 @@ private:
                                              rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_)});
         pairForce_.resize(nPairs);
         pairTorqueB_.resize(nPairs);
+        // Separating-axis hints start empty (they do not change results)
+        pairAxis_.assign(anyPolyhedra_ ? nPairs : 0, Vec3());
 #ifdef __CUDACC__
         pairTorqueA_.resize(nPairs);
 #endif
@@ -1107,7 +1109,7 @@ private:
         const bool rolling = law_.rolling != RollingModel::none;
         PairLists pl{ptr(pairStart_), ptr(pairPartner_), ptr(pairOwner_), ptr(pairXi_),
                      rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_), ptr(pairForce_),
-                     nullptr, ptr(pairTorqueB_)};
+                     nullptr, ptr(pairTorqueB_), pairAxis_.empty() ? nullptr : ptr(pairAxis_)};
         const int nPairs = int(pairPartner_.size());
 #ifdef __CUDACC__
         constexpr bool ownFromPairs = true;
@@ -1305,6 +1307,7 @@ private:
     dvec<Vec3> pairXi_, pairMr_;
     dvec<unsigned char> pairTouching_;
     dvec<Vec3> pairForce_, pairTorqueA_, pairTorqueB_, ownForce_, ownTorque_;
+    dvec<Vec3> pairAxis_;   //!< polyhedra only: PairLists::separatingAxis
     dvec<int> contactCount_, wallContactCount_;
 #ifndef __CUDACC__
     dvec<ForceSum> serialSums_;   //!< the one-thread force pass's accumulators
