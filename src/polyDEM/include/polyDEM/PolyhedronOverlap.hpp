@@ -250,6 +250,28 @@ PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na, const Vec
     return maxA <= minB || maxB <= minA;
 }
 
+//- True if the projections on axis of the point sets a and b are disjoint,
+//  b given in a frame of its own: b's projections are
+//  bOffset + dot(axisInB, b[i])
+PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na,
+                              const Vec3& axisInB, double bOffset, const Vec3* b, int nb)
+{
+    double minA = 1e300, maxA = -1e300, minB = 1e300, maxB = -1e300;
+    for (int i = 0; i < na; ++i)
+    {
+        const double p = dot(axis, a[i]);
+        minA = p < minA ? p : minA;
+        maxA = p > maxA ? p : maxA;
+    }
+    for (int i = 0; i < nb; ++i)
+    {
+        const double p = bOffset + dot(axisInB, b[i]);
+        minB = p < minB ? p : minB;
+        maxB = p > maxB ? p : maxB;
+    }
+    return maxA <= minB || maxB <= minA;
+}
+
 //- Overlap of A and B, B given by its pose in A's body frame; result in A's frame.
 //  cachedAxis (A frame, may be null) is tried first and updated.
 inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const ConvexPolyhedron& B,
@@ -265,6 +287,18 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     const double scale = rA > rB ? rA : rB;
     const double tol = kOverlapPlaneTolerance * scale;
 
+    // The cached axis first, on each shape's own vertices: a pair that stays
+    // apart is rejected before B is moved into A's frame
+    if (cachedAxis && normSqr(*cachedAxis) > 0)
+    {
+        const Vec3 axisInB = rotateInverse(qB, *cachedAxis);
+        if (separatedAlong(*cachedAxis, A.vertices, A.nVertices, axisInB, dot(*cachedAxis, posB),
+                           B.vertices, B.nVertices))
+        {
+            return r;
+        }
+    }
+
     // B in A's frame
     Vec3 bv[kMaxPolyhedronVertices];
     Vec3 bn[kMaxPolyhedronFaces];
@@ -279,12 +313,7 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
         bd[f] = B.faceOffsets[f] + dot(bn[f], posB);
     }
 
-    // Separating axes: cached, faces of A, faces of B, (edges)
-    if (cachedAxis && normSqr(*cachedAxis) > 0
-        && separatedAlong(*cachedAxis, A.vertices, A.nVertices, bv, B.nVertices))
-    {
-        return r;
-    }
+    // Separating axes: faces of A, faces of B, (edges)
     for (int f = 0; f < A.nFaces; ++f)
     {
         double minB = 1e300;

@@ -22,6 +22,11 @@ struct PairLists
     Vec3* force;            //!< on body 1, where touching
     Vec3* torqueA;          //!< on body 1 (per-pair kernel only)
     Vec3* torqueB;          //!< on body 2, where touching
+    //- Polyhedron pairs (null otherwise): the axis that separated the pair at
+    //  its last evaluation, or its contact normal; tried first, so a pair that
+    //  stays apart is rejected with one projection instead of the face tests.
+    //  Only a hint: the result does not depend on it. Zero = none.
+    Vec3* separatingAxis;
 };
 
 //- One contact of law Law between particles of kinds Kind: kinematics, law,
@@ -62,7 +67,8 @@ struct PairContact
         Vec3 armA, armB;
         if constexpr (Law::volumetric)
         {
-            const OverlapResult ov = pairOverlap<Kind>(p, law, a, b);
+            const OverlapResult ov = pairOverlap<Kind>(p, law, a, b,
+                                                       pl.separatingAxis ? pl.separatingAxis + k : nullptr);
             if (!ov.touching)
             {
                 release(k);

@@ -64,9 +64,11 @@ PD_HD inline OverlapResult sphereHalfSpaceOverlap(const Vec3& x, double r, const
 //- Evaluates every contact once, in the list of its particle of smaller id,
 
 //- Volumetric overlap of particles a and b, normal from a to b: the one
-//  shape-pair dispatch (for Kind = SphereKind it is the sphere lens only)
+//  shape-pair dispatch (for Kind = SphereKind it is the sphere lens only).
+//  separatingAxis (may be null): the pair's cached axis for two polyhedra
 template<class Kind>
-PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law, int a, int b)
+PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law, int a, int b,
+                                       Vec3* separatingAxis = nullptr)
 {
     if constexpr (Kind::polyhedra)
     {
@@ -75,7 +77,7 @@ PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law
         if (sa >= 0 && sb >= 0)
         {
             return polyhedronOverlap(law.shapes.shape(sa), p.pos[a], p.q[a],
-                                     law.shapes.shape(sb), p.pos[b], p.q[b]);
+                                     law.shapes.shape(sb), p.pos[b], p.q[b], separatingAxis);
         }
         if (sa >= 0)
         {
@@ -89,6 +91,7 @@ PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law
             return r;
         }
     }
+    (void)separatingAxis;
     return sphereSphereOverlap(p.pos[a], p.radius[a], p.pos[b], p.radius[b]);
 }
 

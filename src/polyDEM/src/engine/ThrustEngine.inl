@@ -908,6 +908,8 @@ private:
                                              rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_)});
         pairForce_.resize(nPairs);
         pairTorqueB_.resize(nPairs);
+        // Separating-axis hints start empty (they do not change results)
+        pairAxis_.assign(anyPolyhedra_ ? nPairs : 0, Vec3());
 #ifdef __CUDACC__
         pairTorqueA_.resize(nPairs);
 #endif
@@ -1107,7 +1109,7 @@ private:
         const bool rolling = law_.rolling != RollingModel::none;
         PairLists pl{ptr(pairStart_), ptr(pairPartner_), ptr(pairOwner_), ptr(pairXi_),
                      rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_), ptr(pairForce_),
-                     nullptr, ptr(pairTorqueB_)};
+                     nullptr, ptr(pairTorqueB_), pairAxis_.empty() ? nullptr : ptr(pairAxis_)};
         const int nPairs = int(pairPartner_.size());
 #ifdef __CUDACC__
         constexpr bool ownFromPairs = true;
@@ -1172,7 +1174,8 @@ private:
                 k.planeMr = rolling ? ptr(planeMr_) : nullptr;
                 k.wallContactCount = ptr(wallContactCount_);
                 k.shares = shares;
-                SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(ownForce_), ptr(ownTorque_)}.run(n);
+                serialSums_.resize(n);
+                SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(serialSums_)}.run(n);
                 return;
             }
 #endif
@@ -1304,7 +1307,11 @@ private:
     dvec<Vec3> pairXi_, pairMr_;
     dvec<unsigned char> pairTouching_;
     dvec<Vec3> pairForce_, pairTorqueA_, pairTorqueB_, ownForce_, ownTorque_;
+    dvec<Vec3> pairAxis_;   //!< polyhedra only: PairLists::separatingAxis
     dvec<int> contactCount_, wallContactCount_;
+#ifndef __CUDACC__
+    dvec<ForceSum> serialSums_;   //!< the one-thread force pass's accumulators
+#endif
 
     // Plane candidates (CSR) and their springs
     dvec<int> planeStart_, planePlane_;

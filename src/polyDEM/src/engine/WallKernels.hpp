@@ -306,6 +306,15 @@ struct ParticleForces
     }
 };
 
+//- Body 2's running sums in the one-thread force pass, in one cache line: a
+//  touching pair adds to one line of its partner instead of to three arrays
+struct alignas(64) ForceSum
+{
+    Vec3 force;
+    Vec3 torque;
+    int contacts;
+};
+
 //- CPU, one thread: the whole force pass in one loop over particles in order,
 //  each pair's share for body 2 added straight into its accumulator (body 2
 //  comes later in the order, so it is complete when its turn comes). The
@@ -316,37 +325,50 @@ struct SerialStep
 {
     PairContact<Law, Kind> contact;
     ParticleForces<Law, Kind, Kick, false> forces;
-    Vec3* accForce;
-    Vec3* accTorque;
+    ForceSum* sums;
+    static constexpr int prefetchDistance = 8;
 
     void run(int n) const
     {
         const PairLists& pl = contact.pl;
-        int* count = forces.contactCount;
+        const ParticleView& p = contact.p;
         for (int i = 0; i < n; ++i)
         {
-            forces.base(i, accForce[i], accTorque[i]);
-            count[i] = 0;
+            forces.base(i, sums[i].force, sums[i].torque);
+            sums[i].contacts = 0;
         }
+        const int nPairs = pl.start[n];
         for (int i = 0; i < n; ++i)
         {
             Vec3 Fo, To;
-            int touching = count[i];
+            int touching = sums[i].contacts;
             const int end = pl.start[i + 1];
             for (int k = pl.start[i]; k < end; ++k)
             {
+                // The partners lie anywhere in memory (cell-hash order): ask for
+                // the lines of a pair a few pairs ahead while this one computes
+                if (k + prefetchDistance < nPairs)
+                {
+                    const int ahead = pl.partner[k + prefetchDistance];
+                    __builtin_prefetch(p.pos + ahead);
+                    __builtin_prefetch(p.radius + ahead);
+                    __builtin_prefetch(p.vel + ahead);
+                    __builtin_prefetch(p.omega + ahead);
+                    __builtin_prefetch(p.mass + ahead);
+                    __builtin_prefetch(sums + ahead);
+                }
                 Vec3 f, ta, tb;
                 if (!contact(i, k, f, ta, tb)) continue;
                 ++touching;
                 Fo += f;
                 To += ta;
-                const int b = pl.partner[k];
-                accForce[b] -= f;
-                accTorque[b] += tb;
-                ++count[b];
+                ForceSum& partner = sums[pl.partner[k]];
+                partner.force -= f;
+                partner.torque += tb;
+                ++partner.contacts;
             }
-            count[i] = touching;
-            forces.finish(i, accForce[i] + Fo, accTorque[i] + To);
+            forces.contactCount[i] = touching;
+            forces.finish(i, sums[i].force + Fo, sums[i].torque + To);
         }
     }
 };
