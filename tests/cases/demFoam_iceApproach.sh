@@ -17,7 +17,10 @@
 #     passed it (t >= 1.5 s), stays within 0.7..1.3 of the target
 #     solidFraction h A_window / v_block = 0.3 x 0.03 x 0.12 / 6.15e-5 =
 #     17.6 blocks (between checks the region loses U interval / L = 8 % of
-#     its blocks; blocks straddle the window's ends);
+#     its blocks; blocks straddle the window's ends). Measured 18..21:
+#     above the target because a top-up places blocks wherever the region
+#     has room, so the region's downstream end, which feeds the channel,
+#     is denser than its mean;
 #   - inserted - removed = particles on every line of particleBalance.dat,
 #     blocks removed by the outlet (none by the domain), more inserted than
 #     the first fill;
