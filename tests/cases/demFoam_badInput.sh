@@ -8,7 +8,8 @@
 #                       misspelledTopKey|misspelledWallKey|misspelledInsertionKey|
 #                       negativeActiveUntil|negativeGap|pairRestitution|
 #                       tinyTimeStep|negativeDeltaT|listOverlap|listBehindWall|
-#                       sliverShape
+#                       sliverShape|approachWithoutVelocity|
+#                       approachOutsideRegion|approachWithoutHeight
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -114,6 +115,18 @@ sliverShape)
     setEntry $props particleTypes/flake "{ shape polyhedron; material glass; geometry { type box; size (0.01 0.01 0.0002); } }"
     expectFile="constant/demProperties"; expectEntry="particleTypes/flake"
     expectAlso="sphericity" ;;
+approachWithoutVelocity)
+    # an approach region moves its particles at the inflow's velocity
+    setEntry $props insertion "{ feed { type inflow; particleType beads; region { type box; min (0 0 0); max (0.02 0.02 0.01); } solidFraction 0.1;  approach { min (-0.01 -0.01 -0.01); max (0.03 0.03 0.02); height 0.005; } } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/feed/velocity" ;;
+approachOutsideRegion)
+    # blocks placed outside the approach box would fall at once
+    setEntry $props insertion "{ feed { type inflow; particleType beads; region { type box; min (0 0 0); max (0.02 0.02 0.01); } solidFraction 0.1; velocity (0.1 0 0); approach { min (-0.01 -0.01 -0.01); max (0.01 0.03 0.02); height 0.005; } } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/feed/region"
+    expectAlso="inside" ;;
+approachWithoutHeight)
+    setEntry $props insertion "{ feed { type inflow; particleType beads; region { type box; min (0 0 0); max (0.02 0.02 0.01); } solidFraction 0.1; velocity (0.1 0 0); approach { min (-0.01 -0.01 -0.01); max (0.03 0.03 0.02);  } } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/feed/approach/height" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

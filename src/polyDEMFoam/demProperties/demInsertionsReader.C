@@ -477,9 +477,10 @@ Foam::demInsertionsReader::read
         });
         static const wordList inflowKeys
         ({
-            "type", "particleType", "time", "seed", "gap", "velocity",
-            "orientation", "region", "diameterDistribution", "solidFraction",
-            "interval", "attempts", "randomYaw", "yawAxis", "endTime"
+            "type", "particleType", "particleTypes", "time", "seed", "gap",
+            "velocity", "orientation", "region", "diameterDistribution",
+            "solidFraction", "interval", "attempts", "randomYaw", "yawAxis",
+            "endTime", "approach", "orientations"
         });
         const label kind = demPropertiesErrors::selectName(id, "type", kinds, "insertion type");
         demPropertiesErrors::checkKeys
@@ -489,7 +490,40 @@ Foam::demInsertionsReader::read
         );
         insertion ins;
         ins.name = e.keyword();
-        ins.type = typeIndex(userTypes, id, "particleType");
+        if (kind == 2 && id.found("particleTypes", keyType::LITERAL))
+        {
+            // An inflow drawing from several types (the size classes of a
+            // brash-ice channel), each equally likely
+            if (id.found("particleType", keyType::LITERAL))
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entries 'insertion/" << e.keyword() << "/particleType'"
+                    << " and 'particleTypes' are exclusive (one type, or a "
+                    << "list drawn with equal probability); keep one in "
+                    << dict.name() << nl << exit(FatalIOError);
+            }
+            const wordList names(id.get<wordList>("particleTypes"));
+            if (names.empty())
+            {
+                FatalIOErrorInFunction(id)
+                    << "Entry 'insertion/" << e.keyword() << "/particleTypes'"
+                    << " must name at least one particle type in "
+                    << dict.name() << nl << exit(FatalIOError);
+            }
+            for (const word& n : names)
+            {
+                dictionary one;
+                one.add("particleTypes", n);
+                one.name() = id.name();
+                ins.types.push_back(typeIndex(userTypes, one, "particleTypes"));
+            }
+            ins.type = ins.types[0];
+        }
+        else
+        {
+            ins.type = typeIndex(userTypes, id, "particleType");
+            ins.types.assign(1, ins.type);
+        }
         ins.time = id.getOrDefault<scalar>("time", -GREAT);
         if (id.found("time", keyType::LITERAL) && !(ins.time >= 0))
         {
@@ -580,9 +614,157 @@ Foam::demInsertionsReader::read
             ins.sizes = readDistribution(dict, id, config.types[ut.firstType]);
         }
         ins.region = readRegion(dict, id);
+        if (kind == 2)
+        {
+            readApproach(dict, id, userTypes, ins);
+        }
         insertions.push_back(std::move(ins));
     }
     return insertions;
+}
+
+
+void Foam::demInsertionsReader::readApproach
+(
+    const dictionary& dict,
+    const dictionary& id,
+    const std::vector<demShapesReader::userType>& userTypes,
+    insertion& ins
+)
+{
+    const std::string base = "insertion/" + ins.name + "/";
+    if (ins.types.size() > 1 && !id.found("approach", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "particleTypes' (several types) "
+            << "needs an 'approach' region (a floating layer); give one "
+            << "'particleType' otherwise, in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    if (!id.found("approach", keyType::LITERAL))
+    {
+        return;
+    }
+    const dictionary* ad = id.findDict("approach");
+    if (!ad)
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "approach' must be a dictionary "
+            << "{ min (x y z); max (x y z); height z; } in " << dict.name()
+            << nl << exit(FatalIOError);
+    }
+    demPropertiesErrors::checkKeys
+    (
+        dict, *ad, base + "approach", wordList({"min", "max", "height"})
+    );
+    const std::string at = base + "approach/";
+    for (const char* key : {"min", "max", "height"})
+    {
+        if (!ad->found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(*ad)
+                << "Entry '" << at.c_str() << key << "' is missing in "
+                << dict.name() << " (approach { min (x y z); max (x y z); "
+                << "height z; }: the kinematic box and the centre height of "
+                << "the blocks placed in the region)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (id.found("orientations", keyType::LITERAL))
+    {
+        if (id.found("orientation", keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entries '" << base.c_str() << "orientation' and "
+                << "'orientations' are exclusive (one for all types, or one "
+                << "per entry of particleTypes); keep one in " << dict.name()
+                << nl << exit(FatalIOError);
+        }
+        const List<vector> angles(id.get<List<vector>>("orientations"));
+        if (angles.size() != label(ins.types.size()))
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry '" << base.c_str() << "orientations' must give one "
+                << "orientation (a b c) [degrees] per particle type listed ("
+                << label(ins.types.size()) << "), not " << angles.size()
+                << ", in " << dict.name() << nl << exit(FatalIOError);
+        }
+        for (const vector& a : angles)
+        {
+            ins.typeOrientations.push_back(orientationFromAngles(a));
+        }
+    }
+    ins.approach = true;
+    ins.approachMin = toVec3(ad->get<vector>("min"));
+    ins.approachMax = toVec3(ad->get<vector>("max"));
+    ins.height = ad->get<scalar>("height");
+    for (int d = 0; d < 3; ++d)
+    {
+        if (!(ins.approachMin[d] < ins.approachMax[d]))
+        {
+            FatalIOErrorInFunction(*ad)
+                << "Entry '" << at.c_str() << "max' must exceed '"
+                << at.c_str() << "min' in every component, in "
+                << dict.name() << nl << exit(FatalIOError);
+        }
+    }
+    if (!id.found("velocity", keyType::LITERAL) || !(norm(ins.velocity) > 0))
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "velocity' must be given and "
+            << "non-zero with an 'approach' region: the particles there move "
+            << "at it (the drift of the ice), in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    if (ins.gap > 0)
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "gap' is not used with an "
+            << "'approach' region (blocks are placed with zero overlap "
+            << "volume, exactly); remove it from " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    if (ins.region.kind != polydem::FillRegion::Kind::box)
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "region' must be a box with an "
+            << "'approach' region, in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    const polydem::Vec3& lo = ins.region.min;
+    const polydem::Vec3& hi = ins.region.max;
+    bool inside = true;
+    for (int d = 0; d < 3; ++d)
+    {
+        inside = inside && lo[d] >= ins.approachMin[d] && hi[d] <= ins.approachMax[d];
+    }
+    if (!inside)
+    {
+        FatalIOErrorInFunction(id)
+            << "Entry '" << base.c_str() << "region' must lie inside '"
+            << at.c_str() << "min/max' (the blocks are placed where they "
+            << "move kinematically), in " << dict.name() << nl
+            << exit(FatalIOError);
+    }
+    if (!(ins.height >= lo.z && ins.height <= hi.z))
+    {
+        FatalIOErrorInFunction(*ad)
+            << "Entry '" << at.c_str() << "height' (" << ins.height
+            << ") must lie within the region's height [" << lo.z << ", "
+            << hi.z << "] (the layer the solid fraction is measured in), in "
+            << dict.name() << nl << exit(FatalIOError);
+    }
+    for (const int t : ins.types)
+    {
+        if (!userTypes[t].polyhedron)
+        {
+            FatalIOErrorInFunction(id)
+                << "Entry '" << base.c_str() << "approach': particle type '"
+                << userTypes[t].name << "' is a sphere; the floating layer of "
+                << "an approach region places polyhedra, in " << dict.name()
+                << nl << exit(FatalIOError);
+        }
+    }
 }
 
 

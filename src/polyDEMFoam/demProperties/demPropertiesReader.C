@@ -280,6 +280,19 @@ Foam::demPropertiesReader::demPropertiesReader(const dictionary& demProperties)
     userTypes_ = demShapesReader::read(dict_, config_);
     walls_ = demWallsReader::read(dict_, config_);
     insertions_ = demInsertionsReader::read(dict_, config_, userTypes_);
+    // The approach regions of the inflows: kinematic boxes in the engine
+    for (const auto& ins : insertions_)
+    {
+        if (ins.approach)
+        {
+            polydem::ApproachRegion a;
+            a.name = ins.name;
+            a.min = ins.approachMin;
+            a.max = ins.approachMax;
+            a.velocity = ins.velocity;
+            config_.approaches.push_back(a);
+        }
+    }
     readOutput();
     computeScene();
 }

@@ -13,6 +13,7 @@ Description
 #include "OSspecific.H"
 #include "IOmanip.H"
 #include "mathematicalConstants.H"
+#include "polyMesh.H"
 
 #include "polyDEM/Insertion.hpp"
 #include "polyDEM/InsertionChecks.hpp"
@@ -173,6 +174,21 @@ double Foam::demSimulation::meanParticleVolume(size_t k) const
     const auto& ins = input_.insertions()[k];
     const auto& ut = input_.userTypes()[ins.type];
     const auto& config = input_.config();
+    if (ins.approach)
+    {
+        // A floating layer: every shape of the listed types equally likely
+        double v = 0;
+        label n = 0;
+        for (const int u : ins.types)
+        {
+            const auto& t = input_.userTypes()[u];
+            for (int s = 0; s < t.nTypes; ++s, ++n)
+            {
+                v += config.shapes[config.types[t.firstType + s].shapeIndex].volume;
+            }
+        }
+        return v/n;
+    }
     if (ut.polyhedron)
     {
         // The shapes are drawn with equal probability (by bounding size)
@@ -212,6 +228,84 @@ bool Foam::demSimulation::inflowDue(size_t k, scalar t) const
     const label every = max(label(1), label(std::llround(ins.interval/deltaT)));
     const label index = label(std::llround(t/deltaT));
     return index % every == 0;
+}
+
+
+void Foam::demSimulation::checkApproachRegions() const
+{
+    // A coupled run: the fluid mesh is in the registry. An inflow with an
+    // approach region must place its blocks outside the mesh (a block's
+    // volume appearing inside it kicks the fluid: the d(eps)/dt of the
+    // pressure equation) and must release them inside it (outside, a block
+    // gets no fluid force and falls)
+    if (!runTime_.foundObject<polyMesh>(polyMesh::defaultRegion))
+    {
+        return;
+    }
+    const polyMesh& mesh =
+        runTime_.lookupObject<polyMesh>(polyMesh::defaultRegion);
+    const boundBox& mb = mesh.bounds();
+    const auto& config = input_.config();
+    for (const auto& ins : input_.insertions())
+    {
+        if (!ins.approach)
+        {
+            continue;
+        }
+        double rMax = 0;
+        for (const int u : ins.types)
+        {
+            const auto& t = input_.userTypes()[u];
+            for (int s = 0; s < t.nTypes; ++s)
+            {
+                rMax = std::max
+                (
+                    rMax,
+                    config.shapes[config.types[t.firstType + s].shapeIndex]
+                        .boundingRadius
+                );
+            }
+        }
+        const polydem::Vec3& lo = ins.region.min;
+        const polydem::Vec3& hi = ins.region.max;
+        bool apart = false;
+        for (int d = 0; d < 3; ++d)
+        {
+            apart = apart
+                || hi[d] + rMax <= mb.min()[d] || lo[d] - rMax >= mb.max()[d];
+        }
+        if (!apart)
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, input_.dict().name(), -1
+            )   << "Entry 'insertion/" << ins.name.c_str() << "/region' "
+                << "(min " << vector(lo.x, lo.y, lo.z) << ", max "
+                << vector(hi.x, hi.y, hi.z) << ") with an approach region "
+                << "must lie outside the fluid mesh (bounds " << mb
+                << ") by the blocks' largest bounding radius " << rMax
+                << " m: a block inserted inside the mesh appears there in "
+                << "one step and kicks the fluid" << nl << exit(FatalIOError);
+        }
+        bool reaches = true;
+        for (int d = 0; d < 3; ++d)
+        {
+            reaches = reaches
+                && ins.approachMax[d] > mb.min()[d]
+                && ins.approachMin[d] < mb.max()[d];
+        }
+        if (!reaches)
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, input_.dict().name(), -1
+            )   << "Entry 'insertion/" << ins.name.c_str() << "/approach' "
+                << "must reach into the fluid mesh (bounds " << mb << "): "
+                << "a block released outside it gets no fluid force and "
+                << "falls; end the box a bounding radius (" << rMax
+                << " m) inside the inlet" << nl << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -268,16 +362,69 @@ polydem::ParticleState Foam::demSimulation::insertInflow
         return polydem::ParticleState();
     }
 
+    // SplitMix64 of (seed, step): a new stream per check, known at restart
+    uint64_t z = uint64_t(ins.seed)*0x9E3779B97F4A7C15ull + uint64_t(step);
+    z = (z ^ (z >> 30))*0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27))*0x94D049BB133111EBull;
+    const uint64_t checkSeed = z ^ (z >> 31);
+
+    polydem::InsertedParticles added;
+    if (ins.approach)
+    {
+        // A floating layer in the approach region: centres at the height,
+        // each block one of the types' shapes, exactly clear of the rest
+        polydem::LayerInsertion layer;
+        for (size_t j = 0; j < ins.types.size(); ++j)
+        {
+            const auto& t = input_.userTypes()[ins.types[j]];
+            // Every shape of the listed types equally likely (a type with
+            // several shapes weighs as many)
+            for (int s = 0; s < t.nTypes; ++s)
+            {
+                layer.types.push_back(t.firstType + s);
+                if (!ins.typeOrientations.empty())
+                {
+                    layer.typeOrientations.push_back
+                    (
+                        ins.typeOrientations[j]
+                    );
+                }
+            }
+        }
+        layer.min = bb.first;
+        layer.max = bb.second;
+        layer.height = ins.height;
+        layer.number = size_t(number);
+        layer.seed = checkSeed;
+        layer.velocity = ins.velocity;
+        layer.orientation =
+            ins.fixedOrientation ? ins.orientation : polydem::Quaternion();
+        layer.randomYaw = ins.randomYaw;
+        layer.yawAxis = ins.yawAxis;
+        layer.maxAttempts = size_t(ins.attempts);
+        try
+        {
+            added = polydem::insertLayer
+            (
+                *system_, layer, present, polydem::nextParticleId(present)
+            );
+        }
+        catch (const polydem::Error& err)
+        {
+            throw polydem::Error
+            (
+                err.message(), input_.dict().name(), "insertion/" + ins.name
+            );
+        }
+    }
+    else
+    {
     polydem::RandomFillInsertion fill;
     fill.types = demInsertionsReader::insertionTypes(ut);
     fill.region = ins.region;
     fill.sizes = ins.sizes;
     fill.number = size_t(number);
-    // SplitMix64 of (seed, step): a new stream per check, known at restart
-    uint64_t z = uint64_t(ins.seed)*0x9E3779B97F4A7C15ull + uint64_t(step);
-    z = (z ^ (z >> 30))*0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27))*0x94D049BB133111EBull;
-    fill.seed = z ^ (z >> 31);
+    fill.seed = checkSeed;
     fill.gap = ins.gap;
     fill.velocity = ins.velocity;
     fill.fixedOrientation = ins.fixedOrientation;
@@ -287,7 +434,6 @@ polydem::ParticleState Foam::demSimulation::insertInflow
     fill.maxAttempts = size_t(ins.attempts);
     fill.partial = true;
 
-    polydem::InsertedParticles added;
     try
     {
         added = polydem::insertRandomFill
@@ -301,6 +447,7 @@ polydem::ParticleState Foam::demSimulation::insertInflow
         (
             err.message(), input_.dict().name(), "insertion/" + ins.name
         );
+    }
     }
     checkInsertedMotion
     (
@@ -1146,6 +1293,7 @@ Foam::demSimulation::demSimulation
     {
         meanParticleVolume_.push_back(meanParticleVolume(k));
     }
+    checkApproachRegions();
 
     const fileName statePath(timePath()/"polyDEM"/"state");
     const int64_t startStep = int64_t(std::llround(runTime_.value()/dt));

@@ -4,12 +4,12 @@ the seed report's dummy hull held fixed in a brash-ice channel, water and
 ice flowing past it at the towing speed (hull-fixed frame).
 
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
-                   [-demStep DT] [-dir DIR]
+                   [-demStep DT] [-endTime T] [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
   -test       2.4 m x 0.6 m, 0.4 m water + 0.4 m air, 0.05 m cells, ~25
-              blocks, 0.3 s
+              blocks, 0.4 s
               (CTest smoke run)
   -full       the report's 10 m x 2 m, 2.5 m water + 2.5 m air, 0.02 m
               cells, CFD step 1e-3 s, ~350 blocks, 6 s (a GPU and many
@@ -19,6 +19,8 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
   -stiffness K  volumetric contact stiffness [N/m3]: -full 2e10 = E/t (E
               2e9 Pa over the 0.1 m block thickness), the reduced sizes 2e9
   -demStep DT DEM step [s]: -full 1e-5 (the report's), reduced 4e-5
+  -endTime T  run length [s] (default: 3 s, -test 0.4 s, -full 6 s); the
+              inflow keeps the channel fed however long
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -68,7 +70,7 @@ SIZES = {
     # N/m3 with its DEM step 1e-5 s (-full); the reduced sizes take a tenth
     # of it and a 4x larger step (README, "Contact stiffness")
     "test": dict(domain=((0.0, -0.3, 0.0), (2.4, 0.3, 0.8), 0.4), stemX=0.8,
-                 cell=0.05, dt=4e-3, dtDem=4e-5, kv=2e9, end=0.3, write=0.1),
+                 cell=0.05, dt=4e-3, dtDem=4e-5, kv=2e9, end=0.4, write=0.1),
     "default": dict(domain=((0.0, -0.5, 0.0), (4.0, 0.5, 1.0), 0.6), stemX=2.2,
                     cell=0.05, dt=4e-3, dtDem=4e-5, kv=2e9, end=3.0, write=0.25),
     "full": dict(domain=((0.0, -1.0, 0.0), (10.0, 1.0, 5.0), 2.5), stemX=3.0,
@@ -84,7 +86,7 @@ def write(path, obj, body, cls="dictionary"):
 
 
 def main():
-    size, d, openWater, U, kv, dtDem = "default", "case", False, 0.74, None, None
+    size, d, openWater, U, kv, dtDem, end = "default", "case", False, 0.74, None, None, None
     args = sys.argv[1:]
     while args:
         a = args.pop(0)
@@ -100,12 +102,18 @@ def main():
             dtDem = float(args.pop(0))
         elif a == "-dir":
             d = args.pop(0)
+        elif a == "-endTime":
+            end = float(args.pop(0))
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
-                     "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -dir DIR)")
+                     "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
-    P = SIZES[size]
+    P = dict(SIZES[size])
+    if end is not None:
+        if not (end > 0):
+            sys.exit(f"makeCase.py: -endTime {end}: expected a run length > 0 s")
+        P["end"] = end
     (dmin, dmax, zw) = P["domain"]
     info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
                             cellSize=P["cell"], iceThickness=ICE_THICKNESS,
@@ -302,22 +310,50 @@ boundaryField
     zlo, zhi = zw - r * t, zw + (1 - r) * t
     y0, y1 = dmin[1], dmax[1]
     outletX = dmax[0] + 0.1      # > the largest bounding radius, 0.099 m (0.12 x 0.12 x 0.1)
+    # The inflow mirrors the outlet: blocks are placed upstream of the inlet
+    # patch, outside the fluid mesh (their centres at least a bounding
+    # radius before it), as a floating layer at the builder's draft (centre
+    # z_w - r t + t/2), and moved kinematically at U through the approach
+    # box, which ends a bounding radius past the inlet: a block is released
+    # to coupled dynamics once it is wholly inside the mesh, where it gets
+    # its whole buoyancy. It enters the fluid through the inlet patch as
+    # smoothly as it leaves through the outlet (README, "Ice inflow").
+    # Sizes: the builder's classes (equal probability), each class with the
+    # builder's flat orientation, a random heading about z.
+    R = 0.1                      # >= the largest bounding radius
+    xin = dmin[0]
+    Lr = 0.3                     # region length along the flow
+    classes, orient = [], {}
+    if not openWater:
+        import re
+        src = open(f"{d}/constant/brashIce/insertion").read()
+        for m in re.finditer(r"particleType\s+(\w+);.*?orientation\s*\(([^)]*)\)", src, re.S):
+            if m.group(1) not in orient:
+                classes.append(m.group(1))
+                orient[m.group(1)] = m.group(2).split()
+    orientations = " ".join(f"({' '.join(f'{float(a):.6g}' for a in orient[c])})" for c in classes)
     insertion = "" if openWater else f"""    #include "brashIce/insertion"
-    // The channel ahead of the hull is built by brashIceChannel (its porosity);
-    // the inflow region at the inlet tops it up as the ice drifts away. It
-    // places blocks clear of their bounding spheres, so it reaches a lower
-    // solid fraction than the builder (docs/demProperties.md, "Inflow")
+    // The channel ahead of the hull is built by brashIceChannel; the inflow
+    // keeps feeding it from upstream of the inlet (docs/demProperties.md,
+    // "Inflow and outflow")
     inlet
     {{
         type            inflow;
-        particleType    iceC1;
-        region          {{ type box; min ({dmin[0]:g} {y0 + 0.06:g} {zlo:.6g}); max ({dmin[0] + 0.25:g} {y1 - 0.06:g} {zhi:.6g}); }}
-        solidFraction   0.3;
-        velocity        {Uv};
+        particleTypes   ({' '.join(classes)});     // the builder's classes, equally likely
+        orientations    ({orientations});   // flat, per class
         randomYaw       true;
-        interval        {max(0.02, round(0.25 / U / 4, 3)):g};
+        region          {{ type box; min ({xin - R - Lr:g} {y0:g} {zlo:.6g}); max ({xin - R:g} {y1:g} {zhi:.6g}); }}
+        solidFraction   {1 - ice['porosity']:.4g};   // the built channel's
+        velocity        {Uv};
+        interval        {max(4 * dt, round(Lr / U / 8 / dt) * dt):g};   // region length / U / 8
+        attempts        300;
         seed            7;
-        time            {0.12 / U:.4g};     // once the built channel has moved on
+        approach        // kinematic at U: from upstream of the region to a radius past the inlet
+        {{
+            min     ({xin - R - Lr - 0.05:g} {y0 - 0.05:g} {zlo - 0.1:.6g});
+            max     ({xin + R:g} {y1 + 0.05:g} {zhi + 0.1:.6g});
+            height  {zlo + 0.5 * t:.6g};     // centre of a block floating at its draft
+        }}
     }}
 """
     write(f"{d}/constant/demProperties", "demProperties", f"""device          cpu;            // cpu | cuda

@@ -138,6 +138,18 @@ def main():
            f" (last: {last['inserted']:.0f} - {last['removed']:.0f} = {last['particles']:.0f};"
            f" {last.get('inserted_inlet', 0):.0f} from the inflow, "
            f"{last.get('removed_downstream', 0):.0f} through the outlet)")
+    # 3b. the inflow: blocks inserted upstream of the inlet entered the mesh
+    #     (ids from the builder's count on are the inflow's)
+    stl = demState.times("ice")[-1]
+    parts = demState.read_state(os.path.join("ice", stl[1], "polyDEM", "state"))["particles"]
+    new = [p for p in parts if p["id"] >= I["blocks"]]
+    inside = [p for p in new if p["px"] > I["xmin"]]
+    released = [p for p in new if p["px"] > I["xmin"] + 0.1]
+    ahead = [p for p in parts if I["xmin"] < p["px"] < I["stemX"]]
+    report(last.get("inserted_inlet", 0) > 0 and len(inside) > 0,
+           f"ice: the inflow inserted {last.get('inserted_inlet', 0):.0f} blocks upstream of the inlet;"
+           f" at t = {stl[0]:g} s {len(inside)} of them have their centre in the fluid mesh,"
+           f" {len(released)} released; {len(ahead)} blocks between the inlet and the stem")
     # The first row (t = 0, before any DEM step) has no wall load yet
     keep = [i for i, s in enumerate(cols["iceSteps"]) if s > 0]
     cols = {k: [v[i] for i in keep] for k, v in cols.items()}

@@ -124,6 +124,21 @@ struct OutletRegion
     Vec3 min, max;
 };
 
+//- A box in which particles move kinematically (an inflow's approach
+//  region, upstream of a fluid inlet, where the particles get no fluid force):
+//  a particle whose centre lies in the box moves at velocity without
+//  turning, whatever the forces on it (it still pushes the particles it
+//  touches, and they do not push it); a particle that leaves the box is
+//  free again. The test is made on the centre at the start of each step's
+//  drift and again after it, so the state (positions) alone decides it and
+//  a restart continues exactly.
+struct ApproachRegion
+{
+    std::string name;
+    Vec3 min, max;
+    Vec3 velocity;
+};
+
 struct SimulationConfig
 {
     double timeStep = 0;            //!< [s]
@@ -132,6 +147,8 @@ struct SimulationConfig
     Vec3 domainMin{-1e30, -1e30, -1e30}, domainMax{1e30, 1e30, 1e30};
     //- Particles inside one of these boxes are removed as well
     std::vector<OutletRegion> outlets;
+    //- Kinematic boxes (ApproachRegion); where boxes overlap, the first wins
+    std::vector<ApproachRegion> approaches;
     //- Verlet skin as a fraction of the largest particle diameter
     double skinFraction = 0.2;
     std::vector<Material> materials;

@@ -75,6 +75,31 @@ struct ListedParticle
     double radius = 0;
 };
 
+//- A floating layer (an inflow with an approach region): polyhedra of the
+//  given engine types (each drawn with equal probability), centres uniform
+//  in the plan rectangle [min, max] at the height z = height, oriented as
+//  orientation (and a uniform heading about yawAxis with randomYaw), placed
+//  one by one clear of each other, of the particles present and of the
+//  fixed plane walls with zero overlap volume (exact, PolyhedronOverlap),
+//  and of the mesh walls to the insertion tolerance (InsertionChecks).
+//  Deterministic for a seed.
+struct LayerInsertion
+{
+    std::vector<int> types;
+    Vec3 min, max;          //!< centres: x, y in [min, max]; min.z, max.z unused
+    double height = 0;
+    std::size_t number = 0;
+    std::uint64_t seed = 1;
+    Vec3 velocity;
+    Quaternion orientation;
+    //- Optional: one orientation per entry of types (instead of orientation)
+    std::vector<Quaternion> typeOrientations;
+    bool randomYaw = false;
+    Vec3 yawAxis{0, 0, 1};
+    //- Random tries per block; a block that finds no place ends the fill
+    std::size_t maxAttempts = 200;
+};
+
 struct InsertedParticles
 {
     ParticleState particles;
@@ -89,6 +114,16 @@ InsertedParticles insertRandomFill
     const System& system,
     const RandomFillInsertion& insertion,
     const ParticleState& obstacles,
+    std::int64_t firstId
+);
+
+//- The particles of a floating layer (LayerInsertion), ids from firstId:
+//  as many as fit, up to insertion.number
+InsertedParticles insertLayer
+(
+    const System& system,
+    const LayerInsertion& insertion,
+    const ParticleState& present,
     std::int64_t firstId
 );
 

@@ -70,7 +70,26 @@ struct ParticleView
     Vec3* torque;
     const Vec3* extForce;  //!< null when none
     const Vec3* extTorque;
+    //- Kinematic approach boxes (SimulationConfig::approaches)
+    const Vec3* approachLo;
+    const Vec3* approachHi;
+    const Vec3* approachVel;
+    int nApproach;
 };
+
+//- The approach box holding x (the first), or -1
+PD_HD inline int approachOf(const ParticleView& p, const Vec3& x)
+{
+    for (int k = 0; k < p.nApproach; ++k)
+    {
+        const Vec3 a = p.approachLo[k], b = p.approachHi[k];
+        if (x.x >= a.x && x.x <= b.x && x.y >= a.y && x.y <= b.y && x.z >= a.z && x.z <= b.z)
+        {
+            return k;
+        }
+    }
+    return -1;
+}
 
 struct PlaneDevice
 {

@@ -63,6 +63,17 @@ struct KickDrift
 
     PD_HD double operator()(int i) const
     {
+        const int a = p.nApproach > 0 ? approachOf(p, p.pos[i]) : -1;
+        if (a >= 0)
+        {
+            // Kinematic (an approach region): the prescribed velocity, no turning
+            const Vec3 v = p.approachVel[a];
+            const Vec3 x = p.pos[i] + dt * v;
+            p.pos[i] = x;
+            p.vel[i] = v;
+            p.omega[i] = Vec3();
+            return guardedDisplacementSqr(x - ref[i], p.omega[i], dt);
+        }
         const double m = p.mass[i];
         const Vec3 v = p.vel[i] + (0.5 * dt / m) * p.force[i];
         const Vec3 x = p.pos[i] + dt * v;
@@ -110,6 +121,17 @@ struct KickDrift
 template<class Kind>
 PD_HD inline void finalKick(const ParticleView& p, const int* typeShape, double dt, int i, const Vec3& F, const Vec3& T)
 {
+    if (p.nApproach > 0)
+    {
+        // Still (or now) in an approach region after the drift: kinematic
+        const int a = approachOf(p, p.pos[i]);
+        if (a >= 0)
+        {
+            p.vel[i] = p.approachVel[a];
+            p.omega[i] = Vec3();
+            return;
+        }
+    }
     p.vel[i] += (0.5 * dt / p.mass[i]) * F;
     const Vec3 I = p.inertia[i];
     if (!Kind::polyhedra || typeShape[p.type[i]] < 0)

@@ -357,6 +357,16 @@ private:
         }
         toDevice(outletLo_, lo);
         toDevice(outletHi_, hi);
+        std::vector<Vec3> alo, ahi, av;
+        for (const auto& a : config_.approaches)
+        {
+            alo.push_back(a.min);
+            ahi.push_back(a.max);
+            av.push_back(a.velocity);
+        }
+        toDevice(approachLo_, alo);
+        toDevice(approachHi_, ahi);
+        toDevice(approachVel_, av);
     }
 
     //- Record the nRemoved particles that inside rejects (before the
@@ -407,7 +417,11 @@ private:
         return ParticleView{int(id_.size()), ptr(id_), ptr(type_), ptr(radius_), ptr(mass_), ptr(inertia_),
                             ptr(pos_), ptr(q_), ptr(vel_), ptr(omega_), ptr(force_), ptr(torque_),
                             extForce_.empty() ? nullptr : ptr(extForce_),
-                            extTorque_.empty() ? nullptr : ptr(extTorque_)};
+                            extTorque_.empty() ? nullptr : ptr(extTorque_),
+                            approachLo_.empty() ? nullptr : ptr(approachLo_),
+                            approachHi_.empty() ? nullptr : ptr(approachHi_),
+                            approachVel_.empty() ? nullptr : ptr(approachVel_),
+                            int(approachLo_.size())};
     }
 
     LawView lawView() const
@@ -1333,6 +1347,8 @@ private:
 
     // Outlet boxes and the particles removed since the last takeRemoved()
     dvec<Vec3> outletLo_, outletHi_;
+    // Kinematic approach boxes (SimulationConfig::approaches)
+    dvec<Vec3> approachLo_, approachHi_, approachVel_;
     std::vector<RemovedParticle> removed_;
 };
 

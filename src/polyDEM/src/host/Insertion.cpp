@@ -1,5 +1,8 @@
 #include "polyDEM/Insertion.hpp"
 
+#include "polyDEM/Error.hpp"
+#include "polyDEM/InsertionChecks.hpp"
+#include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/System.hpp"
 
 #include <algorithm>
@@ -105,6 +108,170 @@ InsertedParticles insertRandomFill
         {
             result.volume += 4.0 / 3.0 * M_PI * std::pow(radii[i], 3);
         }
+    }
+    return result;
+}
+
+
+InsertedParticles insertLayer
+(
+    const System& system,
+    const LayerInsertion& ins,
+    const ParticleState& present,
+    std::int64_t firstId
+)
+{
+    const SimulationConfig& config = system.config();
+    if (ins.types.empty())
+    {
+        throw Error("a floating layer insertion needs at least one particle type");
+    }
+    for (const int t : ins.types)
+    {
+        if (t < 0 || t >= int(config.types.size()) || config.types[t].shape != ShapeKind::polyhedron)
+        {
+            throw Error("a floating layer insertion places polyhedra only");
+        }
+    }
+
+    // A body: centre, orientation, shape (polyhedra) or sphere radius
+    struct Body
+    {
+        Vec3 x;
+        Quaternion q;
+        double r = 0;
+        const ConvexShape* shape = nullptr;
+    };
+    auto bodyOf = [&](const ParticleState& p, std::size_t i)
+    {
+        Body b;
+        b.x = p.position[i];
+        b.q = p.orientation[i];
+        b.r = p.radius[i];
+        const ParticleType& t = config.types.at(p.type[i]);
+        if (t.shape == ShapeKind::polyhedron)
+        {
+            b.shape = &config.shapes.at(t.shapeIndex);
+            b.r = b.shape->boundingRadius;
+        }
+        return b;
+    };
+    auto touch = [](const Body& a, const Body& b)
+    {
+        if (norm(b.x - a.x) >= a.r + b.r) return false;
+        if (a.shape && b.shape)
+        {
+            return polyhedronOverlap(a.shape->view(), a.x, a.q, b.shape->view(), b.x, b.q).touching;
+        }
+        if (a.shape) return polyhedronSphereOverlap(a.shape->view(), a.x, a.q, b.x, b.r).touching;
+        if (b.shape) return polyhedronSphereOverlap(b.shape->view(), b.x, b.q, a.x, a.r).touching;
+        return true;
+    };
+
+    // The particles that can touch the plan rectangle's blocks
+    double rMax = 0;
+    for (const int t : ins.types)
+    {
+        rMax = std::max(rMax, config.shapes[config.types[t].shapeIndex].boundingRadius);
+    }
+    std::vector<Body> near;
+    for (std::size_t i = 0; i < present.size(); ++i)
+    {
+        const Vec3& x = present.position[i];
+        const double reach = rMax + present.radius[i];
+        if (x.x >= ins.min.x - reach && x.x <= ins.max.x + reach && x.y >= ins.min.y - reach
+            && x.y <= ins.max.y + reach && std::abs(x.z - ins.height) <= reach)
+        {
+            near.push_back(bodyOf(present, i));
+        }
+    }
+
+    std::mt19937_64 rng(ins.seed * 0x9E3779B97F4A7C15ULL + 777u);
+    auto uniform = [&rng]() { return double(rng() >> 11) * 0x1.0p-53; };
+    const Vec3 axis = ins.yawAxis / norm(ins.yawAxis);
+    std::vector<ListedParticle> placed;
+    std::vector<Body> placedBodies;
+    for (std::size_t n = 0; n < ins.number; ++n)
+    {
+        const std::size_t pick = std::min(ins.types.size() - 1, std::size_t(uniform() * ins.types.size()));
+        const int type = ins.types[pick];
+        const Quaternion base =
+            ins.typeOrientations.size() == ins.types.size() ? ins.typeOrientations[pick] : ins.orientation;
+        Body b;
+        b.shape = &config.shapes[config.types[type].shapeIndex];
+        b.r = b.shape->boundingRadius;
+        bool found = false;
+        for (std::size_t a = 0; a < ins.maxAttempts && !found; ++a)
+        {
+            b.x = Vec3(ins.min.x + uniform() * (ins.max.x - ins.min.x),
+                       ins.min.y + uniform() * (ins.max.y - ins.min.y), ins.height);
+            b.q = base;
+            if (ins.randomYaw)
+            {
+                b.q = normalised(fromRotationVector((2 * M_PI * uniform()) * axis) * base);
+            }
+            found = true;
+            for (const PlaneWall& w : config.planes)
+            {
+                if (w.motion.kind == MotionKind::fixed
+                    && polyhedronPlaneOverlap(b.shape->view(), b.x, b.q, w.point, w.normal).touching)
+                {
+                    found = false;
+                    break;
+                }
+            }
+            for (std::size_t k = 0; found && k < near.size(); ++k)
+            {
+                found = !touch(b, near[k]);
+            }
+            for (std::size_t k = 0; found && k < placedBodies.size(); ++k)
+            {
+                found = !touch(b, placedBodies[k]);
+            }
+        }
+        if (!found)
+        {
+            break;
+        }
+        placedBodies.push_back(b);
+        ListedParticle lp;
+        lp.position = b.x;
+        lp.orientation = b.q;
+        lp.velocity = ins.velocity;
+        lp.type = type;
+        lp.radius = b.r;
+        placed.push_back(lp);
+    }
+
+    // Mesh walls (and moving planes, at their t = 0 place) to the insertion
+    // tolerance: a block that reaches into one is dropped
+    InsertionTypes ut;
+    ut.firstType = ins.types[0];
+    ut.polyhedron = true;
+    ParticleState p = insertList(system, ut, placed, firstId);
+    if (!config.meshes.empty() && p.size() > 0)
+    {
+        const std::vector<InsertionOverlap> bad = insertionOverlaps(config, p, ParticleState(), false);
+        std::vector<char> drop(p.size(), 0);
+        for (const InsertionOverlap& o : bad)
+        {
+            if (o.partner == InsertionOverlap::Partner::wall) drop[o.particle] = 1;
+        }
+        std::vector<ListedParticle> kept;
+        for (std::size_t i = 0; i < placed.size(); ++i)
+        {
+            if (!drop[i]) kept.push_back(placed[i]);
+        }
+        if (kept.size() != placed.size())
+        {
+            p = insertList(system, ut, kept, firstId);
+        }
+    }
+    InsertedParticles result;
+    result.particles = p;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        result.volume += config.shapes[config.types[p.type[i]].shapeIndex].volume;
     }
     return result;
 }
