@@ -153,25 +153,7 @@ regions
                 + empty + "}\n", cls="volScalarField")
     # The coupling is on, with no particle in the tank: the solver the
     # rock-pile and cube tutorials use, on the experiment without them
-    hc.coupling(case, """couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel exactOverlap;
-smoothingModel none;
-forceModels (SchillerNaumann freeSurfacePressure);
-""")
-    hc.foamfile(os.path.join(case, "constant/demProperties"), "demProperties", """device cpu;
-timeStep 1e-5;
-gravity (0 0 -9.81);
-contactModel { law hertzMindlin; rolling none; }
-materials { mat { youngsModulus 1e7; poissonsRatio 0.3; density 2500; } }
-interactions { default { restitution 0.5; friction 0.5; } }
-particleTypes { grain { shape sphere; material mat; diameter 0.005; } }
-walls { floor { type plane; point (0 0 0); normal (0 0 1); material mat; } }
-insertion { }
-output { format ascii; vtk false; }
-""")
+    vc.coupling_without_particles(case, (0, 0, 1))
     return nx, nz
 
 

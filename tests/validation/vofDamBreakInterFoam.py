@@ -17,6 +17,7 @@ import shutil
 import struct
 import sys
 import hedracase as hc
+import vofcase as vc
 
 SRC = os.path.join(os.environ.get("HEDRA_CACHE", os.path.expanduser("~/.cache/hedra")),
                    "openfoam-v1912-src/tutorials/multiphase/interFoam/laminar/damBreak/damBreak")
@@ -61,25 +62,7 @@ ref = hc.workdir("damBreak-interFoam")
 new = hc.workdir("damBreak-demInterFoam")
 prepare(ref, "interFoam")
 prepare(new, "demInterFoam")
-hc.coupling(new, """couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel exactOverlap;
-smoothingModel none;
-forceModels (SchillerNaumann freeSurfacePressure);
-""")
-hc.foamfile(os.path.join(new, "constant/demProperties"), "demProperties", """device cpu;
-timeStep 1e-5;
-gravity (0 -9.81 0);
-contactModel { law hertzMindlin; rolling none; }
-materials { mat { youngsModulus 1e7; poissonsRatio 0.3; density 2500; } }
-interactions { default { restitution 0.5; friction 0.5; } }
-particleTypes { grain { shape sphere; material mat; diameter 0.005; } }
-walls { floor { type plane; point (0 0 0); normal (0 1 0); material mat; } }
-insertion { }
-output { format ascii; vtk false; }
-""")
+vc.coupling_without_particles(new, (0, 1, 0))
 hc.run("interFoam", ref, "log.interFoam")
 hc.run("demInterFoam", new, "log.demInterFoam")
 
