@@ -231,22 +231,25 @@ inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron
     }
 }
 
+//- The range [lo, hi] of offset + dot(axis, p[i]) over the n points p
+PD_INLINE void projectedRange(const Vec3& axis, double offset, const Vec3* p, int n, double& lo, double& hi)
+{
+    lo = 1e300;
+    hi = -1e300;
+    for (int i = 0; i < n; ++i)
+    {
+        const double s = offset + dot(axis, p[i]);
+        lo = s < lo ? s : lo;
+        hi = s > hi ? s : hi;
+    }
+}
+
 //- True if the projections of the point sets a and b on axis are disjoint
 PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na, const Vec3* b, int nb)
 {
-    double minA = 1e300, maxA = -1e300, minB = 1e300, maxB = -1e300;
-    for (int i = 0; i < na; ++i)
-    {
-        const double p = dot(axis, a[i]);
-        minA = p < minA ? p : minA;
-        maxA = p > maxA ? p : maxA;
-    }
-    for (int i = 0; i < nb; ++i)
-    {
-        const double p = dot(axis, b[i]);
-        minB = p < minB ? p : minB;
-        maxB = p > maxB ? p : maxB;
-    }
+    double minA, maxA, minB, maxB;
+    projectedRange(axis, 0.0, a, na, minA, maxA);
+    projectedRange(axis, 0.0, b, nb, minB, maxB);
     return maxA <= minB || maxB <= minA;
 }
 
@@ -256,19 +259,9 @@ PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na, const Vec
 PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na,
                               const Vec3& axisInB, double bOffset, const Vec3* b, int nb)
 {
-    double minA = 1e300, maxA = -1e300, minB = 1e300, maxB = -1e300;
-    for (int i = 0; i < na; ++i)
-    {
-        const double p = dot(axis, a[i]);
-        minA = p < minA ? p : minA;
-        maxA = p > maxA ? p : maxA;
-    }
-    for (int i = 0; i < nb; ++i)
-    {
-        const double p = bOffset + dot(axisInB, b[i]);
-        minB = p < minB ? p : minB;
-        maxB = p > maxB ? p : maxB;
-    }
+    double minA, maxA, minB, maxB;
+    projectedRange(axis, 0.0, a, na, minA, maxA);
+    projectedRange(axisInB, bOffset, b, nb, minB, maxB);
     return maxA <= minB || maxB <= minA;
 }
 
