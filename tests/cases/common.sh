@@ -75,3 +75,23 @@ compareStates()
          END { printf "largest relative difference %g\n", m }' "$1" "$2"
     fail "restarted $3 differs from the one-go run"
 }
+
+# checkBalance FILE: inserted - removed = particles on every line
+checkBalance()
+{
+    awk '/^# time/ { for (i = 2; i <= NF; i++) c[$i] = i - 1; next }
+         /^#/ { next }
+         { n++
+           if ($c["inserted"] - $c["removed"] != $c["particles"] || $c["balance"] != 0) {
+               printf "line %d (t = %s): inserted %d - removed %d != particles %d\n",
+                      n, $1, $c["inserted"], $c["removed"], $c["particles"]; bad = 1 } }
+         END { if (n < 10) { print "only " n " lines"; bad = 1 }; exit bad }' "$1" \
+        || fail "particle bookkeeping broken in $1"
+}
+
+# lastValue FILE NAME: the last line's value of column NAME
+lastValue()
+{
+    awk -v want="$2" '/^# time/ { for (i = 2; i <= NF; i++) if ($i == want) k = i - 1; next }
+                      /^#/ { next } { v = $k } END { print v }' "$1"
+}

@@ -28,24 +28,6 @@
 #     byte-identical state.
 . "$(dirname "$0")/common.sh"
 
-checkBalance()
-{
-    awk '/^# time/ { for (i = 2; i <= NF; i++) c[$i] = i - 1; next }
-         /^#/ { next }
-         { n++
-           if ($c["inserted"] - $c["removed"] != $c["particles"] || $c["balance"] != 0) {
-               printf "line %d (t = %s): inserted %d - removed %d != particles %d\n",
-                      n, $1, $c["inserted"], $c["removed"], $c["particles"]; bad = 1 } }
-         END { if (n < 10) { print "only " n " lines"; bad = 1 }; exit bad }' "$1" \
-        || fail "particle bookkeeping broken in $1"
-}
-
-column()
-{
-    awk -v want="$2" '/^# time/ { for (i = 2; i <= NF; i++) if ($i == want) k = i - 1; next }
-                      /^#/ { next } { v = $k } END { print v }' "$1"
-}
-
 PY=python3
 $PY -c "import sys" 2>/dev/null || PY=/usr/bin/python3
 
@@ -57,11 +39,11 @@ demFoam > log.demFoam 2>&1 || { tail -30 log.demFoam; fail "demFoam (one go) fai
 echo "demFoam 0 -> 4 s: $(( $(date +%s) - start )) s wall"
 one=postProcessing/demFoam/0/particleBalance.dat
 checkBalance $one
-removedOut=$(column $one removed_downstream)
-removedDom=$(column $one removed_domain)
-inserted=$(column $one inserted_inlet)
+removedOut=$(lastValue $one removed_downstream)
+removedDom=$(lastValue $one removed_domain)
+inserted=$(lastValue $one inserted_inlet)
 firstFill=$(awk '!/^#/ && $4 > 0 { print $4; exit }' $one)
-echo "one go: inserted $inserted (first fill $firstFill), removed by the outlet $removedOut, by the domain $removedDom, present $(column $one particles)"
+echo "one go: inserted $inserted (first fill $firstFill), removed by the outlet $removedOut, by the domain $removedDom, present $(lastValue $one particles)"
 [ "$removedOut" -gt 0 ] || fail "the outlet removed no block"
 [ "$removedDom" -eq 0 ] || fail "the domain removed $removedDom blocks (all should leave by the outlet)"
 [ "$inserted" -gt "$firstFill" ] || fail "no block inserted after the first fill ($inserted)"
@@ -127,7 +109,7 @@ two=postProcessing/demFoam/2/particleBalance.dat
 checkBalance $two
 for c in particles inserted removed inserted_inlet removed_downstream removed_domain
 do
-    a=$(column "$testDir/oneGo/$one" $c); b=$(column $two $c)
+    a=$(lastValue "$testDir/oneGo/$one" $c); b=$(lastValue $two $c)
     [ "$a" = "$b" ] || fail "restarted run ends with $c = $b, the one-go run with $a"
 done
 echo "PASS: approach region kinematic, blocks released, window count in bounds, bookkeeping exact; restart continues the counters"
