@@ -15,6 +15,8 @@ no crash, no hang):
      (solidAlpa; it used to be ignored)       valid name (solidAlpha)
   8. local time stepping (localEuler)      -> fvSchemes: the particles need a
                                               physical time step
+  9. PIMPLE velocityCorrection misspelled  -> fvSolution, the valid values
+     (gradients)                              (reconstruct gradient)
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -67,6 +69,8 @@ tests = [
      "couplingMode resolved;\ndemBackend polyDEM;\nsolidAlpa transported;\n",
      None, ["Unknown entry 'solidAlpa'", "did you mean 'solidAlpha'", "couplingProperties"]),
     ("localEuler", BASE, "LTS", ["localEuler", "fvSchemes", "physical time step"]),
+    ("velocityCorrection", BASE, "velocityCorrection",
+     ["velocityCorrection 'gradients'", "fvSolution", "(reconstruct gradient)"]),
 ]
 
 results = []
@@ -81,6 +85,10 @@ for name, coupling, change, expect in tests:
     elif change == "LTS":
         p = os.path.join(case, "system/fvSchemes")
         txt = open(p).read().replace("default Euler;", "default localEuler;")
+        open(p, "w").write(txt)
+    elif change == "velocityCorrection":
+        p = os.path.join(case, "system/fvSolution")
+        txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradients;")
         open(p, "w").write(txt)
     hc.run("blockMesh", case, "log.blockMesh")
     rc = hc.run("demInterFoam", case, "log.demInterFoam", check=False, timeout=120)
