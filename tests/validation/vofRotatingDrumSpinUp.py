@@ -152,25 +152,7 @@ omega   {OMEGA};
     txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n    correctPhi yes;\n    moveMeshOuterCorrectors no;"
                       "\n    velocityCorrection gradient;")
     open(fvs, "w").write(txt)
-    hc.coupling(case, """couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel exactOverlap;
-smoothingModel none;
-forceModels (SchillerNaumann freeSurfacePressure);
-""")
-    hc.foamfile(os.path.join(case, "constant/demProperties"), "demProperties", """device cpu;
-timeStep 1e-4;
-gravity (0 -9.81 0);
-contactModel { law hertzMindlin; rolling none; }
-materials { mat { youngsModulus 1e7; poissonsRatio 0.3; density 7800; } }
-interactions { default { restitution 0.5; friction 0.5; } }
-particleTypes { ball { shape sphere; material mat; diameter 0.005; } }
-walls { }
-insertion { }
-output { format ascii; vtk false; }
-""")
+    vc.coupling_without_particles(case, (0, 1, 0), floor=False)
     g = os.path.join(case, "constant/g")
     txt = open(g).read()
     open(g, "w").write(txt.replace("(0 0 -9.81)", "(0 -9.81 0)"))

@@ -219,11 +219,12 @@ forceModels (SchillerNaumann freeSurfacePressure);
 """
 
 
-def coupling_without_particles(case, up):
+def coupling_without_particles(case, up, floor=True):
     """couplingProperties and demProperties of an unresolved demInterFoam
     run with the coupling switched on and no particle in it (the solver the
     particle cases use, on a flow without them); up: the unit vector
-    against gravity, e.g. (0, 0, 1)."""
+    against gravity, e.g. (0, 0, 1); floor: a plane wall through the origin
+    normal to it (none for a domain around the origin, a drum)."""
     hc.coupling(case, """couplingMode unresolved;
 formulation setI;
 momentumCoupling implicit;
@@ -234,6 +235,7 @@ forceModels (SchillerNaumann freeSurfacePressure);
 """)
     g = " ".join(f"{-9.81 * u:g}" if u else "0" for u in up)
     n = " ".join(f"{u:g}" for u in up)
+    wall = f"floor {{ type plane; point (0 0 0); normal ({n}); material mat; }} " if floor else ""
     hc.foamfile(os.path.join(case, "constant/demProperties"), "demProperties", f"""device cpu;
 timeStep 1e-5;
 gravity ({g});
@@ -241,7 +243,7 @@ contactModel {{ law hertzMindlin; rolling none; }}
 materials {{ mat {{ youngsModulus 1e7; poissonsRatio 0.3; density 2500; }} }}
 interactions {{ default {{ restitution 0.5; friction 0.5; }} }}
 particleTypes {{ grain {{ shape sphere; material mat; diameter 0.005; }} }}
-walls {{ floor {{ type plane; point (0 0 0); normal ({n}); material mat; }} }}
+walls {{ {wall}}}
 insertion {{ }}
 output {{ format ascii; vtk false; }}
 """)
