@@ -17,6 +17,10 @@ no crash, no hang):
                                               physical time step
   9. PIMPLE velocityCorrection misspelled  -> fvSolution, the valid values
      (gradients)                              (reconstruct gradient)
+ 10. resolved mode, solidAlpha misspelled  -> couplingProperties, the valid
+     (exclude)                                values (excluded fill transported)
+ 11. resolved mode, minFluidFraction 1e-5 -> couplingProperties, the range
+                                              [0.001, 0.1]
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -71,6 +75,12 @@ tests = [
     ("localEuler", BASE, "LTS", ["localEuler", "fvSchemes", "physical time step"]),
     ("velocityCorrection", BASE, "velocityCorrection",
      ["velocityCorrection 'gradients'", "fvSolution", "(reconstruct gradient)"]),
+    ("solidAlphaValue",
+     "couplingMode resolved;\ndemBackend polyDEM;\nsolidAlpha exclude;\n",
+     None, ["solidAlpha 'exclude'", "couplingProperties", "(excluded fill transported)"]),
+    ("minFluidFraction",
+     "couplingMode resolved;\ndemBackend polyDEM;\nminFluidFraction 1e-5;\n",
+     None, ["minFluidFraction 1e-05", "couplingProperties", "[0.001, 0.1]"]),
 ]
 
 results = []

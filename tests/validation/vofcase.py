@@ -75,7 +75,7 @@ def closed_tank(case, lo, hi, n, open_top=False):
                 cls="volScalarField")
 
 
-def vof_dicts(case, end, dt, write, maxCo=0.5, adjust=False, pTol=1e-12):
+def vof_dicts(case, end, dt, write, maxCo=0.5, adjust=False, pTol=1e-12, limiterIter=5):
     body = f"""application demInterFoam;
 startFrom latestTime;
 startTime 0;
@@ -117,7 +117,7 @@ solvers
     "alpha.water.*"
     {{
         nAlphaCorr 2; nAlphaSubCycles 1; cAlpha 1;
-        MULESCorr yes; nLimiterIter 5;
+        MULESCorr yes; nLimiterIter {limiterIter};
         solver smoothSolver; smoother symGaussSeidel; tolerance 1e-12; relTol 0;
     }}
     "pcorr.*" {{ solver PCG; preconditioner DIC; tolerance {pTol}; relTol 0; }}
@@ -247,3 +247,94 @@ walls {{ {wall}}}
 insertion {{ }}
 output {{ format ascii; vtk false; }}
 """)
+
+
+def _rotation(q):
+    """Rotation matrix of the unit quaternion q = (w, x, y, z)."""
+    w, x, y, z = q
+    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+
+
+def submerged_box_volume(centre, q, size, level):
+    """Exact volume of the box of edges 'size' (body frame), centred at
+    'centre' and turned by the quaternion q (w, x, y, z), below the plane
+    z = level: each face polygon clipped to z <= level (Sutherland-Hodgman),
+    the cut closed by the polygon of the plane inside the box, volume by the
+    divergence theorem (sum of the faces' signed cone volumes about the
+    centre)."""
+    R = _rotation(q)
+    h = [0.5 * a for a in size]
+
+    def point(s):
+        return [centre[i] + sum(R[i][j] * s[j] * h[j] for j in range(3)) for i in range(3)]
+
+    faces = []
+    for ax in range(3):
+        for sgn in (-1, 1):
+            u, v = [a for a in range(3) if a != ax]
+            corners = []
+            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                s = [0, 0, 0]
+                s[ax], s[u], s[v] = sgn, a, b
+                corners.append(point(s))
+            faces.append(corners)
+    clipped, cut = [], []
+    for poly in faces:
+        out = []
+        for k in range(len(poly)):
+            a, b = poly[k], poly[(k + 1) % len(poly)]
+            ina, inb = a[2] <= level, b[2] <= level
+            if ina:
+                out.append(a)
+            if ina != inb:
+                t = (level - a[2]) / (b[2] - a[2])
+                x = [a[i] + t * (b[i] - a[i]) for i in range(3)]
+                out.append(x)
+                cut.append(x)
+        if len(out) >= 3:
+            clipped.append(out)
+    vol = 0.0
+
+    def cone(poly):
+        # signed volume of the cone from the centre over the polygon
+        c = centre
+        v = 0.0
+        for k in range(1, len(poly) - 1):
+            a, b, d = poly[0], poly[k], poly[k + 1]
+            a = [a[i] - c[i] for i in range(3)]
+            b = [b[i] - c[i] for i in range(3)]
+            d = [d[i] - c[i] for i in range(3)]
+            v += (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
+                  + a[2] * (b[0] * d[1] - b[1] * d[0])) / 6.0
+        return v
+
+    # the box's faces face away from its centre: their cones count positive;
+    # the cap faces up, towards the centre when the centre is above it
+    for poly in clipped:
+        vol += abs(cone(poly))
+    if len(cut) >= 3:
+        mx = sum(p[0] for p in cut) / len(cut)
+        my = sum(p[1] for p in cut) / len(cut)
+        cut.sort(key=lambda p: math.atan2(p[1] - my, p[0] - mx))
+        # the cap faces up (the submerged part lies below it)
+        vol += abs(cone(cut)) * (1 if level >= centre[2] else -1)
+    return max(vol, 0.0)
+
+
+
+def submerged_from_water(centre, q, size, water, area):
+    """Level and submerged volume of a box floating in a tank of horizontal
+    area 'area' holding the water volume 'water' outside it (flat
+    surface): water = level area - V_sub(level), solved by bisection."""
+    lo, hi = centre[2] - 2 * max(size), centre[2] + 2 * max(size)
+    lo = min(lo, water / area - max(size) ** 3 / area)
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if mid * area - submerged_box_volume(centre, q, size, mid) < water:
+            lo = mid
+        else:
+            hi = mid
+    level = 0.5 * (lo + hi)
+    return level, submerged_box_volume(centre, q, size, level)

@@ -75,15 +75,17 @@ Description
     hydrostatics included: -M g takes out the weight of the fluid inside
     that the fluid equations carried, so the buoyancy is that of the
     pressure on the surface whatever alpha1 is inside, and nothing else is
-    added (no Archimedes term). Then alpha1 in the cells entirely inside a
-    body (lambda = 1) is set from the fluid around them
-    (directForcingIB::fillSolidCells): the forcing carries alpha1 with the
-    body, so a body entering the water would carry air under the surface
-    and release it through its interface cells (a gas source); these
-    cells have no weight in the water outside the bodies,
-    sum (1 - lambda) alpha1 V (postProcessing/demInterFoam/waterVolume.dat),
-    which is not changed, and a mean of neighbours keeps 0 <= alpha1 <= 1
-    without clipping. Then the DEM is sub-cycled and the new mask built.
+    added (no Archimedes term). The water (couplingProperties solidAlpha
+    excluded, the default; resolvedWaterFlux.H): the bodies are excluded
+    from the phase-fraction equation, which transports the water in the
+    fluid part of each cell, eps = max(1 - lambda, minFluidFraction), with
+    the flux phiWater, the fluid's share of phi projected so that
+    ddt(eps) + div(phiWater) = 0: the water outside the bodies,
+    sum eps alpha1 V, is conserved to the solvers' tolerance as they move
+    and cross the surface. The momentum equation's density is the fluid's
+    in the fluid part of a cell and the level outside continued through
+    the bodies (alphaBody) in theirs, with the old density of its own mass
+    balance. Then the DEM is sub-cycled and the new mask built.
     Lubrication is not available in this mode (it needs a constant nu).
 
 \*---------------------------------------------------------------------------*/
@@ -101,6 +103,8 @@ Description
 #include "fvOptions.H"
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
 #include "demCloud.H"
 #include "directForcingIB.H"
 #include "ibParticles.H"
@@ -229,6 +233,7 @@ int main(int argc, char *argv[])
             if (pimple.firstIter())
             {
                 #include "couplingEvolve.H"
+                #include "resolvedWaterFlux.H"
             }
 
             #include "alphaControls.H"

@@ -617,6 +617,25 @@ void Foam::directForcingIB::fillSolidCells
 }
 
 
+void Foam::directForcingIB::fillBodyCells
+(
+    volScalarField& f,
+    const vector& g
+) const
+{
+    const scalarField& lam = lambda_.primitiveField();
+    boolList known(mesh_.nCells(), true);
+    forAll(lam, celli)
+    {
+        if (lam[celli] > 0)
+        {
+            known[celli] = false;
+        }
+    }
+    fillCells(f, g, known);
+}
+
+
 void Foam::directForcingIB::fillSolidPressure(volScalarField& p) const
 {
     boolList known(mesh_.nCells(), true);
