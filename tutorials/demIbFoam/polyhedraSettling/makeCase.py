@@ -57,7 +57,13 @@ name = args[0]
 
 def option(flag, default, conv=float):
     if flag in args:
-        return conv(args[args.index(flag) + 1])
+        i = args.index(flag) + 1
+        try:
+            return conv(args[i])
+        except (IndexError, ValueError):
+            sys.exit("makeCase.py: %s needs a%s value, got '%s'"
+                     % (flag, "n integer" if conv is int else conv is float and " number" or "",
+                        args[i] if i < len(args) else ""))
     return default
 
 
@@ -334,9 +340,12 @@ with open(os.path.join(case, "caseInfo"), "w") as f:
             % (name, AR, "-" if ellipsoid else C, "H" if horizontal else "V", tilt,
                rhoP, rhoF, muF, dEq, vol, mP, (rhoP - rhoF) * vol * 9.81, L, H, z0,
                dx, dEq / dx, nxy * nxy * nz, dt, tEnd, full, levels, band, interval, dxBase))
-print("%s: %s; base mesh %d x %d x %d = %d cells (d/dx %.3g), %d refinement levels within"
-      " %g d of the bounding sphere: d/dx %.3g (dx %.3g mm) near the body; deltaT %g "
-      "(Co 0.3 at %g m/s), endTime %g, release at z = %g m %s (tilt %g deg)"
-      % (name, shapeNote, nxy, nxy, nz, nxy * nxy * nz, dEq / dxBase, levels, band,
+meshNote = ("uniform mesh" if levels == 0 else
+            "%d refinement levels within %g d of the bounding sphere, every %d steps"
+            % (levels, band, interval))
+print("%s: %s; base mesh %d x %d x %d = %d cells (d/dx %.3g), %s: d/dx %.3g (dx %.3g mm)"
+      " near the body; deltaT %g (Co 0.3 at %g m/s), endTime %g, release at z = %g m %s"
+      " (tilt %g deg)"
+      % (name, shapeNote, nxy, nxy, nz, nxy * nxy * nz, dEq / dxBase, meshNote,
          dEq / dx, 1e3 * dx, dt, uRef, tEnd, z0, "horizontal" if horizontal else "vertical",
          tilt))
