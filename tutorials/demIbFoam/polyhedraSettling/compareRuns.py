@@ -38,9 +38,9 @@ for line in open(tab):
     r = dict(zip(head, line.split()))
     ref[r["case"]] = (float(r["wTerminal"]), float(r["wMax"]), float(r["d/dx"]))
 
-first = "refined" if pair else "uniform"
-print("| case | d/dx %s | d/dx refined (near body) | terminal w %s / refined [m/s] | difference |"
-      " max w %s / refined [m/s] | difference |" % (first, first, first))
+first, second = ("NAME", "NAME%s" % suffix) if pair else ("uniform", "refined")
+print("| case | d/dx %s | d/dx %s (near body) | terminal w %s / %s [m/s] | difference |"
+      " max w %s / %s [m/s] | difference |" % (first, second, first, second, first, second))
 print("|---|---|---|---|---|---|---|")
 dH, dV = [], []
 base = ref if pair else uni
