@@ -1,11 +1,23 @@
 #!/usr/bin/env python3
 """Make one case of the polyhedral settling study from template/.
 
-Usage: makeCase.py NAME [-n N] [-full] [-endTime T] [-height H] [-tilt DEG] [-dir D]
+Usage: makeCase.py NAME [-n N] [-refine L] [-band B] [-full] [-endTime T] [-height H]
+                   [-tilt DEG] [-dir D]
   NAME       A<AR>C<C><H|V>  e.g. A1.25C20H (aspect ratio 1.25, 20 facets,
-             horizontal release), A2.0C50V (vertical release), or
-             ellipsoid (the verification particle, see README.md)
-  -n N       cells per equivalent diameter (default 5; ellipsoid 5)
+             horizontal release), A2.0C50V (vertical release),
+             ellipsoid (the verification particle, see README.md), or
+             cube (the convergence case: a cube, d_eq 10 mm, rho_p 1500, in
+             a fluid of rho 1000, mu 0.015 Pa s, face-on; terminal Re ~170)
+  -n N       cells per equivalent diameter near the body (default 5;
+             ellipsoid 5; cube 8)
+  -refine L  refinement levels around the body (default 1, cube 2; 0: uniform mesh
+             of cells d/N everywhere): the base mesh has cells 2^L d/N and
+             dynamicRefineFvMesh refines it L times on the field ibRefinement
+             (cells within B of the bounding sphere), following the body
+  -band B    width of the refined band beyond the bounding sphere, in
+             equivalent diameters (default 1)
+  -interval K  refine (and unrefine) every K time steps (default 4); the
+             body moves 0.3 K near-body cells meanwhile, well inside the band
   -full      the published set-up: polyhedra d/dx = 12.5 (dx = 0.8 mm) in a
              0.1 x 0.1 x 0.32 m box released at z = 0.28 m; ellipsoid
              dx = 0.6 mm in the 0.07 x 0.07 x 0.3 m box
@@ -45,12 +57,28 @@ name = args[0]
 
 def option(flag, default, conv=float):
     if flag in args:
-        return conv(args[args.index(flag) + 1])
+        i = args.index(flag) + 1
+        try:
+            return conv(args[i])
+        except (IndexError, ValueError):
+            sys.exit("makeCase.py: %s needs a%s value, got '%s'"
+                     % (flag, "n integer" if conv is int else conv is float and " number" or "",
+                        args[i] if i < len(args) else ""))
     return default
 
 
 full = "-full" in args
 ellipsoid = name == "ellipsoid"
+cube = name == "cube"
+levels = option("-refine", 2 if cube else 1, int)
+if levels < 0 or levels > 4:
+    sys.exit("makeCase.py: -refine must be 0 ... 4, got %d" % levels)
+band = option("-band", 1.0)
+interval = option("-interval", 4, int)
+if interval < 1:
+    sys.exit("makeCase.py: -interval must be >= 1, got %d" % interval)
+if band < 0:
+    sys.exit("makeCase.py: -band must be >= 0, got %g" % band)
 if ellipsoid:
     R, AR, rhoP = 3.5e-3, 1.30, 1031.0
     # three overlapping spheres of radius R on the x axis: their convex hull
@@ -65,6 +93,17 @@ if ellipsoid:
         N = option("-n", 5.0)
         L, H, z0, dx, tEnd, uRef = 0.05, 0.12, 0.10, d / N, 2.0, 0.06
     writeEvery = 0.02
+    tilt = 0.0
+elif cube:
+    if full:
+        sys.exit("makeCase.py: -full is for the published cases, not the cube")
+    # Terminal Re ~170 on d_eq (Holzer-Sommerfeld: 0.25 m/s face-on): the
+    # regime of the fixed cube (tests/validation/ib/fixedCube, Re_a 100-200)
+    AR, C, horizontal, d, rhoP = 1.0, "-", True, 0.010, 1500.0
+    muF = 0.015
+    N = option("-n", 8.0)
+    L, H, z0, dx, tEnd, uRef = 0.08, 0.26, 0.24, d / N, 0.8, 0.3
+    writeEvery = 0.01
     tilt = 0.0
 else:
     m = re.fullmatch(r"A([0-9.]+)C([0-9]+)([HV])", name)
@@ -85,9 +124,14 @@ if "-height" in args:
     z0 = H - 0.02
 tilt = option("-tilt", tilt)
 
-nxy, nz = int(round(L / dx)), int(round(H / dx))
-dx = L / nxy
-H = nz * dx
+# base mesh of cells 2^levels dx, refined levels times around the body
+dxBase = dx * 2**levels
+nxy, nz = int(round(L / dxBase)), int(round(H / dxBase))
+if nxy < 2 or nz < 2:
+    sys.exit("makeCase.py: base mesh %d x %d x %d: too coarse, lower -refine" % (nxy, nxy, nz))
+dxBase = L / nxy
+dx = dxBase / 2**levels
+H = nz * dxBase
 # deltaT: Courant number 0.3 at uRef (about the largest settling velocity),
 # rounded down to a whole number of 1e-4 s (and of DEM steps)
 dtDEM = 1e-5
@@ -162,6 +206,9 @@ if ellipsoid:
         lo, hi = (mid, hi) if hull(mid) < AR else (lo, mid)
     hull(0.5 * (lo + hi))
     shapeNote = "ellipsoid-like: convex hull of three spheres R = %g mm, AR %g" % (1e3 * R, AR)
+elif cube:
+    gen = ["polyhedronGen", "-shape", "cube", "-d", repr(d), "-o", stl, "-properties"]
+    shapeNote = "cube, d_eq %g mm (edge %.4g mm)" % (1e3 * d, 1e3 * d * (math.pi / 6) ** (1 / 3.0))
 else:
     gen = ["polyhedronGen", "-shape", "settling", "-d", repr(d), "-AR", repr(AR),
            "-C", str(C), "-o", stl, "-properties"]
@@ -178,18 +225,55 @@ vol = float(props["volume"])
 # ---- dictionaries --------------------------------------------------------
 with open(os.path.join(case, "constant", "transportProperties"), "w") as f:
     f.write("""FoamFile { version 2.0; format ascii; class dictionary; object transportProperties; }
-// water: rho_f = %g kg/m3, mu_f = %g Pa s
+// %s: rho_f = %g kg/m3, mu_f = %g Pa s
 nu  %.6e;
 rho %g;
-""" % (rhoF, muF, muF / rhoF, rhoF))
+""" % ("viscous liquid" if cube else "water", rhoF, muF, muF / rhoF, rhoF))
 
 with open(os.path.join(case, "system", "blockMeshDict"), "w") as f:
     f.write("""FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
-// generated by makeCase.py: d/dx = %.3g (dx = %.4g mm)
+// generated by makeCase.py: base mesh d/dx = %.3g (dx = %.4g mm); %d refinement
+// levels around the body: d/dx = %.3g there (constant/dynamicMeshDict)
 vertices ((0 0 0) (%g 0 0) (%g %g 0) (0 %g 0) (0 0 %g) (%g 0 %g) (%g %g %g) (0 %g %g));
 blocks ( hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (1 1 1) );
 boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); } );
-""" % (dEq / dx, 1e3 * dx, L, L, L, L, H, L, H, L, L, H, L, H, nxy, nxy, nz))
+""" % (dEq / dxBase, 1e3 * dxBase, levels, dEq / dx, L, L, L, L, H, L, H, L, L, H, L, H,
+       nxy, nxy, nz))
+
+# ---- refinement around the body (dynamicRefineFvMesh on ibRefinement, as
+# tests/validation/ibRefinement.py): the cells within `band` of the body's
+# bounding sphere are refined `levels` times every step, and those it has
+# left are unrefined (unrefineLevel 0.5), so the body stays in cells d/N
+with open(os.path.join(case, "constant", "dynamicMeshDict"), "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class dictionary; object dynamicMeshDict; }\n")
+    if levels == 0:
+        f.write("dynamicFvMesh staticFvMesh;\n")
+    else:
+        f.write("""// generated by makeCase.py: %d levels, cells d/%.3g within %g d of the
+// bounding sphere
+dynamicFvMesh dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{
+    refineInterval %d; field ibRefinement;
+    lowerRefineLevel 0.5; upperRefineLevel 1.5; unrefineLevel 0.5;
+    nBufferLayers 1; maxRefinement %d; maxCells 20000000;
+    correctFluxes ((phi none)); dumpLevel true;
+}
+""" % (levels, dEq / dx, band, interval, levels))
+if levels > 0:
+    ibp = os.path.join(case, "constant", "ibProperties")
+    txt = open(ibp).read()
+    txt += "// refined band beyond the bounding sphere: %g d (makeCase.py -band)\nrefinement { band %.9g; }\n" % (band, band * dEq)
+    with open(ibp, "w") as f:
+        f.write(txt)
+    fvs = os.path.join(case, "system", "fvSolution")
+    txt = open(fvs).read()
+    a = "    pFinal { $p; relTol 0.005; }\n"
+    assert a in txt, "template/system/fvSolution: no pFinal line to add pcorr after"
+    # CorrectPhi after each mesh change (demIbFoam) needs a pcorr solver
+    txt = txt.replace(a, a + "    \"pcorr.*\" { $p; tolerance 1e-9; relTol 0; }\n")
+    with open(fvs, "w") as f:
+        f.write(txt)
 
 # Release orientation: rotation by releaseAngle about world y, which turns
 # body x (the long axis) to (cos a, 0, -sin a)
@@ -252,10 +336,16 @@ with open(os.path.join(case, "caseInfo"), "w") as f:
     f.write("name %s\nAR %g\nfacets %s\nrelease %s\ntilt %g\nrhoP %g\nrhoF %g\nmuF %g\n"
             "dEq %.9g\nvolume %.9g\nmass %.9g\nnetWeight %.9g\nL %g\nH %g\nz0 %g\n"
             "dx %.9g\ndOverDx %.4g\ncells %d\ndeltaT %g\nendTime %g\nfull %d\n"
+            "refine %d\nband %g\ninterval %d\ndxBase %.9g\n"
             % (name, AR, "-" if ellipsoid else C, "H" if horizontal else "V", tilt,
                rhoP, rhoF, muF, dEq, vol, mP, (rhoP - rhoF) * vol * 9.81, L, H, z0,
-               dx, dEq / dx, nxy * nxy * nz, dt, tEnd, full))
-print("%s: %s; mesh %d x %d x %d = %d cells, d/dx %.2f (dx %.3g mm); deltaT %g "
-      "(Co 0.3 at %g m/s), endTime %g, release at z = %g m %s (tilt %g deg)"
-      % (name, shapeNote, nxy, nxy, nz, nxy * nxy * nz, dEq / dx, 1e3 * dx, dt, uRef,
-         tEnd, z0, "horizontal" if horizontal else "vertical", tilt))
+               dx, dEq / dx, nxy * nxy * nz, dt, tEnd, full, levels, band, interval, dxBase))
+meshNote = ("uniform mesh" if levels == 0 else
+            "%d refinement levels within %g d of the bounding sphere, every %d steps"
+            % (levels, band, interval))
+print("%s: %s; base mesh %d x %d x %d = %d cells (d/dx %.3g), %s: d/dx %.3g (dx %.3g mm)"
+      " near the body; deltaT %g (Co 0.3 at %g m/s), endTime %g, release at z = %g m %s"
+      " (tilt %g deg)"
+      % (name, shapeNote, nxy, nxy, nz, nxy * nxy * nz, dEq / dxBase, meshNote,
+         dEq / dx, 1e3 * dx, dt, uRef, tEnd, z0, "horizontal" if horizontal else "vertical",
+         tilt))
