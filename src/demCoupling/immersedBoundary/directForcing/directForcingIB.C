@@ -603,17 +603,7 @@ void Foam::directForcingIB::fillSolidCells
     const vector& g
 ) const
 {
-    const scalarField& lam = lambda_.primitiveField();
-    // known: the value is set (fluid and partial cells, then the filled)
-    boolList known(mesh_.nCells(), true);
-    forAll(lam, celli)
-    {
-        if (cellBody_[celli] >= 0 && lam[celli] >= 1)
-        {
-            known[celli] = false;
-        }
-    }
-    fillCells(f, g, known);
+    fillCellsOfSolidFraction(f, g, 1);
 }
 
 
@@ -623,11 +613,23 @@ void Foam::directForcingIB::fillBodyCells
     const vector& g
 ) const
 {
+    fillCellsOfSolidFraction(f, g, SMALL);
+}
+
+
+void Foam::directForcingIB::fillCellsOfSolidFraction
+(
+    volScalarField& f,
+    const vector& g,
+    const scalar minLambda
+) const
+{
     const scalarField& lam = lambda_.primitiveField();
+    // known: the value is set (the cells with less solid, then the filled)
     boolList known(mesh_.nCells(), true);
     forAll(lam, celli)
     {
-        if (lam[celli] > 0)
+        if (cellBody_[celli] >= 0 && lam[celli] >= minLambda)
         {
             known[celli] = false;
         }
