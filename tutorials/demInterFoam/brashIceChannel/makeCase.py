@@ -4,7 +4,7 @@ the seed report's dummy hull held fixed in a brash-ice channel, water and
 ice flowing past it at the towing speed (hull-fixed frame).
 
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
-                   [-demStep DT] [-endTime T] [-dir DIR]
+                   [-demStep DT] [-endTime T] [-hullDraft T] [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -21,6 +21,11 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
   -demStep DT DEM step [s]: -full 1e-5 (the report's), reduced 4e-5
   -endTime T  run length [s] (default: 3 s, -test 0.4 s, -full 6 s); the
               inflow keeps the channel fed however long
+  -hullDraft T  the dummy hull's draft [m] (waterline above the keel;
+              default 0.25, half its 0.5 m depth: the report gives none).
+              The keel is at z_w - T, so the water under the hull is
+              z_w - T - z_min deep (default 0.35 m; -test 0.15 m); it must
+              be at least one base cell, and 0 < T <= 0.5 m
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -87,6 +92,8 @@ def write(path, obj, body, cls="dictionary"):
 
 def main():
     size, d, openWater, U, kv, dtDem, end = "default", "case", False, 0.74, None, None, None
+    draft = 0.25                 # the dummy hull's default draft (hull.py)
+    HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
         a = args.pop(0)
@@ -104,9 +111,16 @@ def main():
             d = args.pop(0)
         elif a == "-endTime":
             end = float(args.pop(0))
+        elif a == "-hullDraft":
+            v = args.pop(0) if args else ""
+            try:
+                draft = float(v)
+            except ValueError:
+                sys.exit(f"makeCase.py: -hullDraft '{v}': expected a draft in m")
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
-                     "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, -dir DIR)")
+                     "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
+                     "-hullDraft T, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -115,10 +129,19 @@ def main():
             sys.exit(f"makeCase.py: -endTime {end}: expected a run length > 0 s")
         P["end"] = end
     (dmin, dmax, zw) = P["domain"]
+    if not (0 < draft <= HULL_DEPTH):
+        sys.exit(f"makeCase.py: -hullDraft {draft:g}: expected 0 < T <= {HULL_DEPTH:g} m "
+                 "(the dummy hull's depth)")
+    keelClearance = zw - draft - dmin[2]
+    if keelClearance < P["cell"] - 1e-12:
+        sys.exit(f"makeCase.py: -hullDraft {draft:g}: the keel (z = {zw - draft:g} m) is less than "
+                 f"a base cell ({P['cell']:g} m) above the floor (z = {dmin[2]:g} m, water "
+                 f"{zw - dmin[2]:g} m deep); expected T <= {zw - dmin[2] - P['cell']:g} m")
     info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
                             cellSize=P["cell"], iceThickness=ICE_THICKNESS,
                             velocity=(U, 0.0, 0.0), snap=False,
-                            bowPoints=32, hullLevels=2)
+                            bowPoints=32, hullLevels=2,
+                            hullDict=f"type dummy; depth {HULL_DEPTH:g}; draft {draft:g};")
     ice = info["ice"]
     # The stem is at the waterline at stemX; the hull runs 1.2 m aft of it
     hullEnd = P["stemX"] + 1.2
@@ -426,14 +449,16 @@ output
         for k, v in dict(size=size, openWater=int(openWater), speed=U, stiffness=kv,
                          xmin=dmin[0], xmax=dmax[0], ymin=dmin[1], ymax=dmax[1],
                          zmin=dmin[2], zmax=dmax[2], waterLevel=zw, stemX=P["stemX"],
-                         hullEnd=hullEnd, cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
+                         hullEnd=hullEnd, hullDraft=draft, keelClearance=round(keelClearance, 9),
+                         cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
                          blocks=ice["blocks"], porosity=ice["porosity"],
                          iceThickness=ICE_THICKNESS, rhoWater=RHO_W,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
     print(f"makeCase.py {size}{' openWater' if openWater else ''}: U {U:g} m/s, "
           f"{0 if openWater else ice['blocks']} blocks (porosity {ice['porosity']:.3f}), "
-          f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s")
+          f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s, "
+          f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel)")
 
 
 main()
