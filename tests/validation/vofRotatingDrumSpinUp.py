@@ -84,49 +84,8 @@ def u_analytic(r, t):
 
 
 def write_case(case):
-    a = R / math.sqrt(2)
-    pts = [(-C, -C), (C, -C), (C, C), (-C, C), (-a, -a), (a, -a), (a, a), (-a, a)]
-    verts = " ".join(f"({x} {y} 0)" for x, y in pts) + " " + \
-        " ".join(f"({x} {y} {DZ})" for x, y in pts)
-    arcs = ""
-    for (i, j), (mx, my) in {(4, 5): (0, -R), (5, 6): (R, 0), (6, 7): (0, R), (7, 4): (-R, 0)}.items():
-        arcs += f"    arc {i} {j} ({mx} {my} 0)\n    arc {i + 8} {j + 8} ({mx} {my} {DZ})\n"
-    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict", f"""
-convertToMeters 1;
-vertices ( {verts} );
-blocks
-(
-    hex (0 1 2 3 8 9 10 11) ({N} {N} 1) simpleGrading (1 1 1)
-    hex (4 5 1 0 12 13 9 8) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (5 6 2 1 13 14 10 9) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (6 7 3 2 14 15 11 10) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (7 4 0 3 15 12 8 11) ({N} {M} 1) simpleGrading (1 1 1)
-);
-edges
-(
-{arcs});
-boundary
-(
-    shell {{ type wall; faces ((4 5 13 12) (5 6 14 13) (6 7 15 14) (7 4 12 15)); }}
-    frontAndBack
-    {{
-        type empty;
-        faces
-        (
-            (0 3 2 1) (4 0 1 5) (5 1 2 6) (6 2 3 7) (7 3 0 4)
-            (8 9 10 11) (12 13 9 8) (13 14 10 9) (14 15 11 10) (15 12 8 11)
-        );
-    }}
-);
-""")
-    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", f"""
-dynamicFvMesh   dynamicMotionSolverFvMesh;
-motionSolver    solidBody;
-solidBodyMotionFunction rotatingMotion;
-origin  (0 0 0);
-axis    (0 0 1);
-omega   {OMEGA};
-""")
+    vc.drum_mesh(case, R, N, M, C, DZ)
+    vc.rotating_mesh(case, OMEGA)
     vc.vof_dicts(case, T_END, DT, 0.25, pTol=1e-10)
     tp = os.path.join(case, "constant/transportProperties")
     txt = open(tp).read()
@@ -158,19 +117,6 @@ omega   {OMEGA};
     open(g, "w").write(txt.replace("(0 0 -9.81)", "(0 -9.81 0)"))
 
 
-def internal(path, width):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(?:scalar|vector)>\s*(\d+)\s*\(", txt)
-    if m is None:
-        m2 = re.search(r"internalField\s+uniform\s+\(?([^;)]*)\)?;", txt)
-        return None, [float(v) for v in m2.group(1).split()]
-    body = txt[m.end():]
-    n = int(m.group(1))
-    nums = re.findall(r"[-+0-9.eE]+", body.split("\n)\n", 1)[0])
-    vals = [float(v) for v in nums[:n * width]]
-    return n, vals
-
-
 results = []
 case = hc.workdir("rotatingDrum")
 write_case(case)
@@ -179,8 +125,8 @@ hc.run("postProcess -func writeCellCentres -time 0", case, "log.cellCentres")
 hc.run("postProcess -func writeCellVolumes -time 0", case, "log.cellVolumes")
 hc.run("demInterFoam", case, "log.demInterFoam", timeout=1200)
 
-n, c0 = internal(os.path.join(case, "0/C"), 3)
-_, vol = internal(os.path.join(case, "0/V"), 1)
+n, c0 = vc.internal_field(os.path.join(case, "0/C"), 3)
+_, vol = vc.internal_field(os.path.join(case, "0/V"), 1)
 xy = [(c0[3 * i], c0[3 * i + 1]) for i in range(n)]
 r = [math.hypot(x, y) for x, y in xy]
 Linf = sum(1800 * v * OMEGA * ri * ri for v, ri in zip(vol, r))
@@ -190,7 +136,7 @@ print(f"mesh: {n} cells, area {sum(vol) / DZ:.6g} m2 (pi R^2 = {math.pi * R * R:
 def frame(t):
     """Velocity of each cell at time t: (u_theta, u_r) at the cell's
     current position (the mesh turned by Omega t)."""
-    _, U = internal(os.path.join(case, f"{t:g}", "U"), 3)
+    _, U = vc.internal_field(os.path.join(case, f"{t:g}", "U"), 3)
     ph = OMEGA * t
     cs, sn = math.cos(ph), math.sin(ph)
     out = []
