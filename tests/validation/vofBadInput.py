@@ -74,7 +74,7 @@ tests = [
      None, ["Unknown entry 'solidAlpa'", "did you mean 'solidAlpha'", "couplingProperties"]),
     ("localEuler", BASE, "LTS", ["localEuler", "fvSchemes", "physical time step"]),
     ("velocityCorrection", BASE, "velocityCorrection",
-     ["velocityCorrection 'gradients'", "fvSolution", "(reconstruct gradient)"]),
+     ["velocityCorrection 'gradients'", "fvSolution", "(reconstruct gradient gaussBalance)"]),
     ("solidAlphaValue",
      "couplingMode resolved;\ndemBackend polyDEM;\nsolidAlpha exclude;\n",
      None, ["solidAlpha 'exclude'", "couplingProperties", "(excluded fill transported)"]),

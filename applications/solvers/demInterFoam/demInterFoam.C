@@ -104,6 +104,7 @@ Description
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
 #include "upwind.H"
+#include "gaussReconstruct.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "demCloud.H"
