@@ -49,18 +49,8 @@ def make(mode, end):
     vc.drum_mesh(case, R, N, M, C, DZ)
     vc.rotating_mesh(case, None)
     vc.vof_dicts(case, end, DT, 0.1, pTol=1e-10, limiterIter=20)
-    sides = "    frontAndBack { type empty; }\n"
-    hc.foamfile(os.path.join(case, "0/U"), "U",
-                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
-                "boundaryField\n{\n    shell { type noSlip; }\n" + sides + "}\n",
-                cls="volVectorField")
-    hc.foamfile(os.path.join(case, "0/p_rgh"), "p_rgh",
-                "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
-                "boundaryField\n{\n    shell { type fixedFluxPressure; value uniform 0; }\n"
-                + sides + "}\n", cls="volScalarField")
-    fvs = os.path.join(case, "system/fvSolution")
-    txt = open(fvs).read()
-    open(fvs, "w").write(txt.replace("PIMPLE\n{", f"PIMPLE\n{{\n    velocityCorrection {mode};"))
+    vc.drum_fields(case, "noSlip", alpha=False)
+    vc.pimple_entries(case, f"    velocityCorrection {mode};\n")
     vc.coupling_without_particles(case, (0, 1, 0), floor=False)
     hc.foamfile(os.path.join(case, "constant/g"), "g",
                 "dimensions [0 1 -2 0 0 0 0];\nvalue (0 -9.81 0);\n",
@@ -71,7 +61,8 @@ def make(mode, end):
     alpha = "\n".join("1" if c[3 * i + 1] < LEVEL else "0" for i in range(n))
     hc.foamfile(os.path.join(case, "0/alpha.water"), "alpha.water",
                 f"dimensions [0 0 0 0 0 0 0];\ninternalField nonuniform List<scalar> {n}\n(\n"
-                f"{alpha}\n);\nboundaryField\n{{\n    shell {{ type zeroGradient; }}\n{sides}}}\n",
+                f"{alpha}\n);\nboundaryField\n{{\n    shell {{ type zeroGradient; }}\n"
+                "    frontAndBack { type empty; }\n}\n",
                 cls="volScalarField")
     ok = hc.run("demInterFoam", case, "log.demInterFoam", check=False)
     return case, n

@@ -72,26 +72,11 @@ def write_case(case, omega):
     vc.drum_mesh(case, R, N, M, C, DZ)
     vc.rotating_mesh(case, omega)
     vc.vof_dicts(case, T_END, DT, 0.05, pTol=1e-10)
-    sides = "    frontAndBack { type empty; }\n"
-    hc.foamfile(os.path.join(case, "0/alpha.water"), "alpha.water",
-                "dimensions [0 0 0 0 0 0 0];\ninternalField uniform 1;\n"
-                "boundaryField\n{\n    shell { type zeroGradient; }\n" + sides + "}\n",
-                cls="volScalarField")
-    hc.foamfile(os.path.join(case, "0/U"), "U",
-                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
-                "boundaryField\n{\n    shell { type noSlip; }\n" + sides + "}\n",
-                cls="volVectorField")
-    hc.foamfile(os.path.join(case, "0/p_rgh"), "p_rgh",
-                "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
-                "boundaryField\n{\n    shell { type fixedFluxPressure; value uniform 0; }\n"
-                + sides + "}\n", cls="volScalarField")
-    fvs = os.path.join(case, "system/fvSolution")
-    txt = open(fvs).read()
+    vc.drum_fields(case, "noSlip")
     # velocityCorrection gradient: interFoam's reconstruct diverges from rest
     # on this O-grid (validation.vofRotatingDrumSpinUp)
-    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n    correctPhi yes;\n    moveMeshOuterCorrectors no;"
-                      "\n    velocityCorrection gradient;")
-    open(fvs, "w").write(txt)
+    vc.pimple_entries(case, "    correctPhi yes;\n    moveMeshOuterCorrectors no;\n"
+                      "    velocityCorrection gradient;\n")
     bodies = "\n".join(
         f"    {{ shape sphere; radius {0.5 * D_P}; position ({x:.6g} {y:.6g} {z:.6g});"
         f" velocity (0 0 0); omega (0 0 0); }}" for x, y, z in bed())

@@ -91,26 +91,11 @@ def write_case(case):
     txt = open(tp).read()
     txt = re.sub(r"water \{[^}]*\}", f"water {{ transportModel Newtonian; nu {NU}; rho 1800; }}", txt)
     open(tp, "w").write(txt)
-    sides = "    frontAndBack { type empty; }\n"
-    hc.foamfile(os.path.join(case, "0/alpha.water"), "alpha.water",
-                "dimensions [0 0 0 0 0 0 0];\ninternalField uniform 1;\n"
-                "boundaryField\n{\n    shell { type zeroGradient; }\n" + sides + "}\n",
-                cls="volScalarField")
-    hc.foamfile(os.path.join(case, "0/U"), "U",
-                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
-                "boundaryField\n{\n    shell { type movingWallVelocity; value uniform (0 0 0); }\n"
-                + sides + "}\n", cls="volVectorField")
-    hc.foamfile(os.path.join(case, "0/p_rgh"), "p_rgh",
-                "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
-                "boundaryField\n{\n    shell { type fixedFluxPressure; value uniform 0; }\n"
-                + sides + "}\n", cls="volScalarField")
-    fvs = os.path.join(case, "system/fvSolution")
-    txt = open(fvs).read()
+    vc.drum_fields(case, "movingWallVelocity; value uniform (0 0 0)")
     # velocityCorrection gradient: interFoam's reconstruct diverges from rest
     # on this O-grid (pEqn.H, createFields.H)
-    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n    correctPhi yes;\n    moveMeshOuterCorrectors no;"
-                      "\n    velocityCorrection gradient;")
-    open(fvs, "w").write(txt)
+    vc.pimple_entries(case, "    correctPhi yes;\n    moveMeshOuterCorrectors no;\n"
+                      "    velocityCorrection gradient;\n")
     vc.coupling_without_particles(case, (0, 1, 0), floor=False)
     g = os.path.join(case, "constant/g")
     txt = open(g).read()

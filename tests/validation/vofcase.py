@@ -413,3 +413,30 @@ def internal_field(path, width):
     nums = re.findall(r"[-+0-9.eE]+", body.split("\n)\n", 1)[0])
     vals = [float(v) for v in nums[:n * width]]
     return n, vals
+
+
+def drum_fields(case, shell_U, alpha=True):
+    """0/U (shell: shell_U, e.g. "noSlip" or "movingWallVelocity; value
+    uniform (0 0 0)"), 0/p_rgh (fixedFluxPressure) and, with alpha, 0/alpha.water
+    uniform 1 of a drum_mesh case, at rest; frontAndBack empty."""
+    sides = "    frontAndBack { type empty; }\n"
+    if alpha:
+        hc.foamfile(os.path.join(case, "0/alpha.water"), "alpha.water",
+                    "dimensions [0 0 0 0 0 0 0];\ninternalField uniform 1;\n"
+                    "boundaryField\n{\n    shell { type zeroGradient; }\n" + sides + "}\n",
+                    cls="volScalarField")
+    hc.foamfile(os.path.join(case, "0/U"), "U",
+                "dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+                f"boundaryField\n{{\n    shell {{ type {shell_U}; }}\n" + sides + "}\n",
+                cls="volVectorField")
+    hc.foamfile(os.path.join(case, "0/p_rgh"), "p_rgh",
+                "dimensions [1 -1 -2 0 0 0 0];\ninternalField uniform 0;\n"
+                "boundaryField\n{\n    shell { type fixedFluxPressure; value uniform 0; }\n"
+                + sides + "}\n", cls="volScalarField")
+
+
+def pimple_entries(case, entries):
+    """Add entries (text) at the top of fvSolution's PIMPLE dictionary."""
+    fvs = os.path.join(case, "system/fvSolution")
+    txt = open(fvs).read()
+    open(fvs, "w").write(txt.replace("PIMPLE\n{", "PIMPLE\n{\n" + entries, 1))
