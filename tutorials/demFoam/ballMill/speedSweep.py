@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Ball mill speed sweep (run by ./speedSweep): the steady shoulder, toe and
+power of the cases sweep/<noLifters|liftersN>_<fraction>/ (chargeShape means,
+postProcessing/charge/*/chargeMean.dat) next to Morrell's charge-shape
+correlations and C-model net power (millCorrelations.py, where the
+citation is). Writes speedSweep.dat (plain columns), speedSweep.png and a
+markdown table on standard output.
+
+Usage: speedSweep.py [SWEEPDIR] (default sweep)
+"""
+import glob
+import math
+import os
+import re
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+import millCorrelations as mc
+
+# The tutorial's mill (chargeNumbers.py): D, slice length, filling, bed solid
+# fraction, ball density
+D, L, J, SOLID, RHO = 3.0, 0.2, 0.35, 0.6, 7200.0
+RHO_C = SOLID * RHO
+
+
+def means(case):
+    m = {}
+    for f in glob.glob(case + "/postProcessing/charge/*/chargeMean.dat"):
+        for line in open(f):
+            if line.startswith("#") or not line.strip():
+                continue
+            q, v, e, n = line.split()
+            m[q.split("[")[0]] = (float(v), float(e), int(n))
+    return m
+
+
+def wallTime(case):
+    try:
+        text = open(case + "/runTime").read()
+    except OSError:
+        return float("nan")
+    w = re.search(r"wall time (\d+) s", text)
+    return float(w.group(1)) if w else float("nan")
+
+
+def rpmOf(case):
+    text = open(case + "/constant/demProperties").read()
+    return float(re.search(r"\brpm\s+([0-9.eE+-]+)\s*;", text).group(1))
+
+
+sweep = sys.argv[1] if len(sys.argv) > 1 else "sweep"
+rows = []
+for case in sorted(glob.glob(os.path.join(sweep, "*_*"))):
+    name, frac = os.path.basename(case).rsplit("_", 1)
+    lifters = 0 if name == "noLifters" else int(name.replace("lifters", ""))
+    m = means(case)
+    if "shoulder" not in m:
+        print("%s: no steady means (not run, or not finished)" % case, file=sys.stderr)
+        continue
+    rpm = rpmOf(case)
+    phi = rpm / mc.criticalRpm(D)
+    rows.append(dict(
+        lifters=lifters, phi=phi, rpm=rpm,
+        shoulder=m["shoulder"][:2], toe=m["toe"][:2],
+        power=(m["power"][0] / 1e3, m["power"][1] / 1e3),
+        powerGravity=(m["powerGravity"][0] / 1e3, m["powerGravity"][1] / 1e3),
+        n=m["shoulder"][2],
+        mShoulder=math.degrees(mc.shoulderAngle(phi, J)),
+        mToe=math.degrees(mc.toeAngle(phi, J)),
+        mPower=mc.netPower(D, L, J, phi, RHO_C) / 1e3,
+        wall=wallTime(case)))
+if not rows:
+    raise SystemExit("speedSweep.py: no finished cases under %s/" % sweep)
+rows.sort(key=lambda r: (r["lifters"], r["phi"]))
+
+with open("speedSweep.dat", "w") as f:
+    f.write("# Dry ball mill speed sweep (tutorials/demFoam/ballMill, ./speedSweep): D %g m, "
+            "slice %g m, J %g, charge density %g kg/m^3\n" % (D, L, J, RHO_C))
+    f.write("# angles [deg] from the horizontal on the rising side, positive in the sense "
+            "of rotation (chargeShape); errors: standard errors of the steady means "
+            "(batch means); power per slice [kW]\n")
+    f.write("# Morrell: charge-shape correlations and C-model net power "
+            "(millCorrelations.py)\n")
+    f.write("# lifters phi rpm shoulder shoulderErr toe toeErr power powerErr powerGravity "
+            "powerGravityErr samples morrellShoulder morrellToe morrellPower demFoamWall_s\n")
+    for r in rows:
+        f.write("%d %.4f %.4f %.3f %.3f %.3f %.3f %.4f %.4f %.4f %.4f %d %.3f %.3f %.4f %.0f\n"
+                % (r["lifters"], r["phi"], r["rpm"], r["shoulder"][0], r["shoulder"][1],
+                   r["toe"][0], r["toe"][1], r["power"][0], r["power"][1],
+                   r["powerGravity"][0], r["powerGravity"][1], r["n"],
+                   r["mShoulder"], r["mToe"], r["mPower"], r["wall"]))
+
+print("| lifters | phi | rpm | shoulder deg | Morrell | diff | toe deg | Morrell | diff "
+      "| power kW / slice | Morrell C | diff | demFoam s |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+for r in rows:
+    print("| %d | %.2f | %.2f | %.1f +- %.1f | %.1f | %+.1f | %.1f +- %.1f | %.1f | %+.1f "
+          "| %.2f +- %.2f | %.2f | %+.0f %% | %.0f |"
+          % (r["lifters"], r["phi"], r["rpm"], r["shoulder"][0], r["shoulder"][1],
+             r["mShoulder"], r["shoulder"][0] - r["mShoulder"],
+             r["toe"][0], r["toe"][1], r["mToe"], r["toe"][0] - r["mToe"],
+             r["power"][0], r["power"][1], r["mPower"],
+             100 * (r["power"][0] / r["mPower"] - 1), r["wall"]))
+
+phis = [0.5 + 0.005 * k for k in range(91)]
+fig, ax = plt.subplots(1, 2, figsize=(13, 5))
+ax[0].plot(phis, [math.degrees(mc.shoulderAngle(p, J)) for p in phis], "b-",
+           label="shoulder, Morrell (J = %.2f)" % J)
+ax[0].plot(phis, [math.degrees(mc.toeAngle(p, J)) for p in phis], "r-",
+           label="toe, Morrell")
+marks = {0: "o", 8: "s"}
+for lifters in sorted(set(r["lifters"] for r in rows)):
+    sel = [r for r in rows if r["lifters"] == lifters]
+    lab = "no lifters" if lifters == 0 else "%d lifters" % lifters
+    mk = marks.get(lifters, "^")
+    face = "none" if lifters else None
+    ax[0].errorbar([r["phi"] for r in sel], [r["shoulder"][0] for r in sel],
+                   yerr=[r["shoulder"][1] for r in sel], fmt=mk, color="b",
+                   mfc=face or "b", capsize=3, label="shoulder, DEM, " + lab)
+    ax[0].errorbar([r["phi"] for r in sel], [r["toe"][0] for r in sel],
+                   yerr=[r["toe"][1] for r in sel], fmt=mk, color="r",
+                   mfc=face or "r", capsize=3, label="toe, DEM, " + lab)
+    ax[1].errorbar([r["phi"] for r in sel], [r["power"][0] for r in sel],
+                   yerr=[r["power"][1] for r in sel], fmt=mk, color="k",
+                   mfc=face or "k", capsize=3, label="DEM, shell torque, " + lab)
+ax[0].set_xlabel("fraction of critical speed (N_c = 42.3/sqrt(D) = %.2f rpm)"
+                 % mc.criticalRpm(D))
+ax[0].set_ylabel("angle from the rising-side horizontal [deg]")
+ax[0].set_title("Charge shape, D %g m, J %.2f, dry" % (D, J))
+ax[0].grid(alpha=0.3)
+ax[0].legend(fontsize=8, loc="center left")
+
+ax[1].plot(phis, [mc.netPower(D, L, J, p, RHO_C) / 1e3 for p in phis], "g-",
+           label="Morrell C-model net power")
+ax[1].set_xlabel("fraction of critical speed")
+ax[1].set_ylabel("power per %g m slice [kW]" % L)
+ax[1].set_title("Power draw (charge density %g kg/m^3)" % RHO_C)
+ax[1].grid(alpha=0.3)
+ax[1].legend(fontsize=8, loc="lower right")
+lo, hi = ax[1].get_ylim()
+sec = ax[1].twinx()
+sec.set_ylim(lo / L, hi / L)
+sec.set_ylabel("power per metre of mill [kW/m]")
+fig.tight_layout()
+fig.savefig("speedSweep.png", dpi=110)
+print("wrote speedSweep.dat, speedSweep.png (%d cases)" % len(rows), file=sys.stderr)
