@@ -3,10 +3,10 @@
 power of the cases sweep/<noLifters|liftersN>_<fraction>/ (chargeShape means,
 postProcessing/charge/*/chargeMean.dat) next to Morrell's charge-shape
 correlations and C-model net power (millCorrelations.py, where the
-citation is). Writes speedSweep.dat (plain columns), speedSweep.png and a
-markdown table on standard output.
+citation is). Writes OUT.dat (plain columns), OUT.png and a markdown table
+on standard output.
 
-Usage: speedSweep.py [SWEEPDIR] (default sweep)
+Usage: speedSweep.py [SWEEPDIR [OUT]] (default sweep speedSweep)
 """
 import glob
 import math
@@ -46,12 +46,20 @@ def wallTime(case):
     return float(w.group(1)) if w else float("nan")
 
 
+def ballSizes(case):
+    text = open(case + "/constant/demProperties").read()
+    lo = [float(x) for x in re.findall(r"\bmin\s+([0-9.eE+-]+)\s*;", text)]
+    hi = [float(x) for x in re.findall(r"\bmax\s+([0-9.eE+-]+)\s*;", text)]
+    return min(lo), max(hi)
+
+
 def rpmOf(case):
     text = open(case + "/constant/demProperties").read()
     return float(re.search(r"\brpm\s+([0-9.eE+-]+)\s*;", text).group(1))
 
 
 sweep = sys.argv[1] if len(sys.argv) > 1 else "sweep"
+out = sys.argv[2] if len(sys.argv) > 2 else "speedSweep"
 rows = []
 for case in sorted(glob.glob(os.path.join(sweep, "*_*"))):
     name, frac = os.path.basename(case).rsplit("_", 1)
@@ -71,14 +79,14 @@ for case in sorted(glob.glob(os.path.join(sweep, "*_*"))):
         mShoulder=math.degrees(mc.shoulderAngle(phi, J)),
         mToe=math.degrees(mc.toeAngle(phi, J)),
         mPower=mc.netPower(D, L, J, phi, RHO_C) / 1e3,
-        wall=wallTime(case)))
+        wall=wallTime(case), balls=ballSizes(case)))
 if not rows:
     raise SystemExit("speedSweep.py: no finished cases under %s/" % sweep)
 rows.sort(key=lambda r: (r["lifters"], r["phi"]))
 
-with open("speedSweep.dat", "w") as f:
-    f.write("# Dry ball mill speed sweep (tutorials/demFoam/ballMill, ./speedSweep): D %g m, "
-            "slice %g m, J %g, charge density %g kg/m^3\n" % (D, L, J, RHO_C))
+with open(out + ".dat", "w") as f:
+    f.write("# Dry ball mill speed sweep (tutorials/demFoam/ballMill, ./speedSweep, cases %s/): "
+            "D %g m, slice %g m, J %g, charge density %g kg/m^3\n" % (sweep, D, L, J, RHO_C))
     f.write("# angles [deg] from the horizontal on the rising side, positive in the sense "
             "of rotation (chargeShape); errors: standard errors of the steady means "
             "(batch means); power per slice [kW]\n")
@@ -129,7 +137,9 @@ for lifters in sorted(set(r["lifters"] for r in rows)):
 ax[0].set_xlabel("fraction of critical speed (N_c = 42.3/sqrt(D) = %.2f rpm)"
                  % mc.criticalRpm(D))
 ax[0].set_ylabel("angle from the rising-side horizontal [deg]")
-ax[0].set_title("Charge shape, D %g m, J %.2f, dry" % (D, J))
+sizes = sorted(set(r["balls"] for r in rows))
+ballText = ", ".join("%g-%g mm" % (1e3 * a, 1e3 * b) for a, b in sizes)
+ax[0].set_title("Charge shape, D %g m, J %.2f, dry, balls %s" % (D, J, ballText))
 ax[0].grid(alpha=0.3)
 ax[0].legend(fontsize=8, loc="center left")
 
@@ -145,5 +155,5 @@ sec = ax[1].twinx()
 sec.set_ylim(lo / L, hi / L)
 sec.set_ylabel("power per metre of mill [kW/m]")
 fig.tight_layout()
-fig.savefig("speedSweep.png", dpi=110)
-print("wrote speedSweep.dat, speedSweep.png (%d cases)" % len(rows), file=sys.stderr)
+fig.savefig(out + ".png", dpi=110)
+print("wrote %s.dat, %s.png (%d cases)" % (out, out, len(rows)), file=sys.stderr)
