@@ -93,13 +93,15 @@ def shoulderAngle(phi, J):
             - (tT - math.pi / 2) * ((0.3386 + 0.1041 * phi) + (1.54 - 2.5673 * phi) * J))
 
 
-def netPower(D, L, J, phi, rhoC, g=G):
+def netPower(D, L, J, phi, rhoC, g=G, shoulder=None, toe=None):
     """Morrell's C-model net power of the charge [W] of a dry cylindrical
-    mill (no slurry pool, no cone ends): D, L [m], rhoC [kg/m^3]."""
+    mill (no slurry pool, no cone ends): D, L [m], rhoC [kg/m^3]. The
+    shoulder and toe angles [rad] are Morrell's correlations unless given
+    (e.g. measured ones)."""
     rm = D / 2
     Nm = phi * criticalRpm(D) / 60.0
-    tT = toeAngle(phi, J)
-    tS = shoulderAngle(phi, J)
+    tT = toeAngle(phi, J) if toe is None else toe
+    tS = shoulderAngle(phi, J) if shoulder is None else shoulder
     arc = 2 * math.pi + tS - tT
     dh = math.sin(tS) - math.sin(tT)
     rBar = rm / 2 * (1 + math.sqrt(1 - 2 * math.pi * J / arc))

@@ -79,6 +79,8 @@ for case in sorted(glob.glob(os.path.join(sweep, "*_*"))):
         mShoulder=math.degrees(mc.shoulderAngle(phi, J)),
         mToe=math.degrees(mc.toeAngle(phi, J)),
         mPower=mc.netPower(D, L, J, phi, RHO_C) / 1e3,
+        mPowerDEM=mc.netPower(D, L, J, phi, RHO_C, shoulder=math.radians(m["shoulder"][0]),
+                              toe=math.radians(m["toe"][0])) / 1e3,
         wall=wallTime(case), balls=ballSizes(case)))
 if not rows:
     raise SystemExit("speedSweep.py: no finished cases under %s/" % sweep)
@@ -93,25 +95,26 @@ with open(out + ".dat", "w") as f:
     f.write("# Morrell: charge-shape correlations and C-model net power "
             "(millCorrelations.py)\n")
     f.write("# lifters phi rpm shoulder shoulderErr toe toeErr power powerErr powerGravity "
-            "powerGravityErr samples morrellShoulder morrellToe morrellPower demFoamWall_s\n")
+            "powerGravityErr samples morrellShoulder morrellToe morrellPower "
+            "morrellPowerAtDEMAngles demFoamWall_s\n")
     for r in rows:
-        f.write("%d %.4f %.4f %.3f %.3f %.3f %.3f %.4f %.4f %.4f %.4f %d %.3f %.3f %.4f %.0f\n"
+        f.write("%d %.4f %.4f %.3f %.3f %.3f %.3f %.4f %.4f %.4f %.4f %d %.3f %.3f %.4f %.4f %.0f\n"
                 % (r["lifters"], r["phi"], r["rpm"], r["shoulder"][0], r["shoulder"][1],
                    r["toe"][0], r["toe"][1], r["power"][0], r["power"][1],
                    r["powerGravity"][0], r["powerGravity"][1], r["n"],
-                   r["mShoulder"], r["mToe"], r["mPower"], r["wall"]))
+                   r["mShoulder"], r["mToe"], r["mPower"], r["mPowerDEM"], r["wall"]))
 
 print("| lifters | phi | rpm | shoulder deg | Morrell | diff | toe deg | Morrell | diff "
-      "| power kW / slice | Morrell C | diff | demFoam s |")
-print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+      "| power kW / slice | Morrell C | diff | C-model at DEM angles | demFoam s |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     print("| %d | %.2f | %.2f | %.1f +- %.1f | %.1f | %+.1f | %.1f +- %.1f | %.1f | %+.1f "
-          "| %.2f +- %.2f | %.2f | %+.0f %% | %.0f |"
+          "| %.2f +- %.2f | %.2f | %+.0f %% | %.2f | %.0f |"
           % (r["lifters"], r["phi"], r["rpm"], r["shoulder"][0], r["shoulder"][1],
              r["mShoulder"], r["shoulder"][0] - r["mShoulder"],
              r["toe"][0], r["toe"][1], r["mToe"], r["toe"][0] - r["mToe"],
              r["power"][0], r["power"][1], r["mPower"],
-             100 * (r["power"][0] / r["mPower"] - 1), r["wall"]))
+             100 * (r["power"][0] / r["mPower"] - 1), r["mPowerDEM"], r["wall"]))
 
 phis = [0.5 + 0.005 * k for k in range(91)]
 fig, ax = plt.subplots(1, 2, figsize=(13, 5))
