@@ -117,44 +117,39 @@ for r in rows:
              100 * (r["power"][0] / r["mPower"] - 1), r["mPowerDEM"], r["wall"]))
 
 phis = [0.5 + 0.005 * k for k in range(91)]
-fig, ax = plt.subplots(1, 2, figsize=(13, 5))
+fig, ax = plt.subplots(1, 3, figsize=(17, 5))
 ax[0].plot(phis, [math.degrees(mc.shoulderAngle(p, J)) for p in phis], "b-",
-           label="shoulder, Morrell (J = %.2f)" % J)
-ax[0].plot(phis, [math.degrees(mc.toeAngle(p, J)) for p in phis], "r-",
-           label="toe, Morrell")
+           label="Morrell's correlation (J = %.2f)" % J)
+ax[1].plot(phis, [math.degrees(mc.toeAngle(p, J)) for p in phis], "r-",
+           label="Morrell's correlation (J = %.2f)" % J)
+ax[2].plot(phis, [mc.netPower(D, L, J, p, RHO_C) / 1e3 for p in phis], "g-",
+           label="Morrell C-model net power")
 marks = {0: "o", 8: "s"}
 for lifters in sorted(set(r["lifters"] for r in rows)):
     sel = [r for r in rows if r["lifters"] == lifters]
-    lab = "no lifters" if lifters == 0 else "%d lifters" % lifters
+    lab = "DEM, no lifters" if lifters == 0 else "DEM, %d lifters" % lifters
     mk = marks.get(lifters, "^")
-    face = "none" if lifters else None
-    ax[0].errorbar([r["phi"] for r in sel], [r["shoulder"][0] for r in sel],
-                   yerr=[r["shoulder"][1] for r in sel], fmt=mk, color="b",
-                   mfc=face or "b", capsize=3, label="shoulder, DEM, " + lab)
-    ax[0].errorbar([r["phi"] for r in sel], [r["toe"][0] for r in sel],
-                   yerr=[r["toe"][1] for r in sel], fmt=mk, color="r",
-                   mfc=face or "r", capsize=3, label="toe, DEM, " + lab)
-    ax[1].errorbar([r["phi"] for r in sel], [r["power"][0] for r in sel],
-                   yerr=[r["power"][1] for r in sel], fmt=mk, color="k",
-                   mfc=face or "k", capsize=3, label="DEM, shell torque, " + lab)
-ax[0].set_xlabel("fraction of critical speed (N_c = 42.3/sqrt(D) = %.2f rpm)"
-                 % mc.criticalRpm(D))
-ax[0].set_ylabel("angle from the rising-side horizontal [deg]")
+    x = [r["phi"] for r in sel]
+    for a, key, colour in ((ax[0], "shoulder", "b"), (ax[1], "toe", "r"), (ax[2], "power", "k")):
+        a.errorbar(x, [r[key][0] for r in sel], yerr=[r[key][1] for r in sel], fmt=mk,
+                   color=colour, mfc="none" if lifters else colour, capsize=3,
+                   label=lab + (", shell torque" if key == "power" else ""))
 sizes = sorted(set(r["balls"] for r in rows))
 ballText = ", ".join("%g-%g mm" % (1e3 * a, 1e3 * b) for a, b in sizes)
-ax[0].set_title("Charge shape, D %g m, J %.2f, dry, balls %s" % (D, J, ballText))
-ax[0].grid(alpha=0.3)
-ax[0].legend(fontsize=8, loc="center left")
-
-ax[1].plot(phis, [mc.netPower(D, L, J, p, RHO_C) / 1e3 for p in phis], "g-",
-           label="Morrell C-model net power")
-ax[1].set_xlabel("fraction of critical speed")
-ax[1].set_ylabel("power per %g m slice [kW]" % L)
-ax[1].set_title("Power draw (charge density %g kg/m^3)" % RHO_C)
-ax[1].grid(alpha=0.3)
-ax[1].legend(fontsize=8, loc="lower right")
-lo, hi = ax[1].get_ylim()
-sec = ax[1].twinx()
+for a in ax:
+    a.set_xlabel("fraction of critical speed (N_c = 42.3/sqrt(D) = %.2f rpm)"
+                 % mc.criticalRpm(D))
+    a.grid(alpha=0.3)
+    a.legend(fontsize=8)
+ax[0].set_ylabel("shoulder: angle above the rising-side horizontal [deg]")
+ax[0].set_title("Shoulder (D %g m, J %.2f, dry, balls %s)" % (D, J, ballText), fontsize=10)
+ax[1].set_ylabel("toe: angle from the rising-side horizontal [deg]\n(180 + degrees below "
+                 "the falling-side horizontal)")
+ax[1].set_title("Toe (same angle convention as chargeShape)", fontsize=10)
+ax[2].set_ylabel("power per %g m slice [kW]" % L)
+ax[2].set_title("Power draw (charge density %g kg/m^3)" % RHO_C, fontsize=10)
+lo, hi = ax[2].get_ylim()
+sec = ax[2].twinx()
 sec.set_ylim(lo / L, hi / L)
 sec.set_ylabel("power per metre of mill [kW/m]")
 fig.tight_layout()
