@@ -61,8 +61,9 @@ slurry term rho_p (sin theta_T - sin theta_TO) is zero; no cone ends):
 P is the net power of the charge's motion; Morrell's gross (motor) power is
 no-load power + k P with k = 1.26 for industrial mills: neither the no-load
 power nor k applies to the torque on a simulated shell, which is compared
-with P. The correlations were fitted to laboratory and industrial mills with
-lifters / liner profiles, wet; no smooth-shell or dry data (see README.md).
+with P. The correlations were fitted to wet tumbling mills (the paper's
+title); whether their data include smooth shells or dry ball charges was not
+checked (the thesis was not at hand; see README.md).
 """
 import math
 
