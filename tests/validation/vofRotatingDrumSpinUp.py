@@ -36,9 +36,15 @@ gravity, on a static mesh too; pimpleFoam on the same mesh stays at rest.
 import math
 import os
 import re
+import sys
 
 import hedracase as hc
 import vofcase as vc
+
+# The O-grid, its rotation and PIMPLE settings: shared with the wet ball mill
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tutorials", "demInterFoam", "common"))
+import rotatingDrum as rd  # noqa: E402
 
 R = 0.05
 NU = 0.3 / 1800.0
@@ -84,49 +90,10 @@ def u_analytic(r, t):
 
 
 def write_case(case):
-    a = R / math.sqrt(2)
-    pts = [(-C, -C), (C, -C), (C, C), (-C, C), (-a, -a), (a, -a), (a, a), (-a, a)]
-    verts = " ".join(f"({x} {y} 0)" for x, y in pts) + " " + \
-        " ".join(f"({x} {y} {DZ})" for x, y in pts)
-    arcs = ""
-    for (i, j), (mx, my) in {(4, 5): (0, -R), (5, 6): (R, 0), (6, 7): (0, R), (7, 4): (-R, 0)}.items():
-        arcs += f"    arc {i} {j} ({mx} {my} 0)\n    arc {i + 8} {j + 8} ({mx} {my} {DZ})\n"
-    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict", f"""
-convertToMeters 1;
-vertices ( {verts} );
-blocks
-(
-    hex (0 1 2 3 8 9 10 11) ({N} {N} 1) simpleGrading (1 1 1)
-    hex (4 5 1 0 12 13 9 8) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (5 6 2 1 13 14 10 9) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (6 7 3 2 14 15 11 10) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (7 4 0 3 15 12 8 11) ({N} {M} 1) simpleGrading (1 1 1)
-);
-edges
-(
-{arcs});
-boundary
-(
-    shell {{ type wall; faces ((4 5 13 12) (5 6 14 13) (6 7 15 14) (7 4 12 15)); }}
-    frontAndBack
-    {{
-        type empty;
-        faces
-        (
-            (0 3 2 1) (4 0 1 5) (5 1 2 6) (6 2 3 7) (7 3 0 4)
-            (8 9 10 11) (12 13 9 8) (13 14 10 9) (14 15 11 10) (15 12 8 11)
-        );
-    }}
-);
-""")
-    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", f"""
-dynamicFvMesh   dynamicMotionSolverFvMesh;
-motionSolver    solidBody;
-solidBodyMotionFunction rotatingMotion;
-origin  (0 0 0);
-axis    (0 0 1);
-omega   {OMEGA};
-""")
+    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict",
+                rd.o_grid_block_mesh(R, N, M, C, 0.0, DZ))
+    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict",
+                rd.dynamic_mesh_dict(OMEGA))
     vc.vof_dicts(case, T_END, DT, 0.25, pTol=1e-10)
     tp = os.path.join(case, "constant/transportProperties")
     txt = open(tp).read()
@@ -149,8 +116,7 @@ omega   {OMEGA};
     txt = open(fvs).read()
     # velocityCorrection gradient: interFoam's reconstruct diverges from rest
     # on this O-grid (pEqn.H, createFields.H)
-    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n    correctPhi yes;\n    moveMeshOuterCorrectors no;"
-                      "\n    velocityCorrection gradient;")
+    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n" + rd.PIMPLE_O_GRID)
     open(fvs, "w").write(txt)
     vc.coupling_without_particles(case, (0, 1, 0), floor=False)
     g = os.path.join(case, "constant/g")
