@@ -36,15 +36,9 @@ gravity, on a static mesh too; pimpleFoam on the same mesh stays at rest.
 import math
 import os
 import re
-import sys
 
 import hedracase as hc
 import vofcase as vc
-
-# The O-grid, its rotation and PIMPLE settings: shared with the wet ball mill
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "tutorials", "demInterFoam", "common"))
-import rotatingDrum as rd  # noqa: E402
 
 R = 0.05
 NU = 0.3 / 1800.0
@@ -90,10 +84,8 @@ def u_analytic(r, t):
 
 
 def write_case(case):
-    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict",
-                rd.o_grid_block_mesh(R, N, M, C, 0.0, DZ))
-    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict",
-                rd.dynamic_mesh_dict(OMEGA))
+    vc.drum_mesh(case, R, N, M, C, DZ)
+    vc.rotating_mesh(case, OMEGA)
     vc.vof_dicts(case, T_END, DT, 0.25, pTol=1e-10)
     tp = os.path.join(case, "constant/transportProperties")
     txt = open(tp).read()
@@ -116,25 +108,13 @@ def write_case(case):
     txt = open(fvs).read()
     # velocityCorrection gradient: interFoam's reconstruct diverges from rest
     # on this O-grid (pEqn.H, createFields.H)
-    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n" + rd.PIMPLE_O_GRID)
+    txt = txt.replace("PIMPLE\n{", "PIMPLE\n{\n    correctPhi yes;\n    moveMeshOuterCorrectors no;"
+                      "\n    velocityCorrection gradient;")
     open(fvs, "w").write(txt)
     vc.coupling_without_particles(case, (0, 1, 0), floor=False)
     g = os.path.join(case, "constant/g")
     txt = open(g).read()
     open(g, "w").write(txt.replace("(0 0 -9.81)", "(0 -9.81 0)"))
-
-
-def internal(path, width):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(?:scalar|vector)>\s*(\d+)\s*\(", txt)
-    if m is None:
-        m2 = re.search(r"internalField\s+uniform\s+\(?([^;)]*)\)?;", txt)
-        return None, [float(v) for v in m2.group(1).split()]
-    body = txt[m.end():]
-    n = int(m.group(1))
-    nums = re.findall(r"[-+0-9.eE]+", body.split("\n)\n", 1)[0])
-    vals = [float(v) for v in nums[:n * width]]
-    return n, vals
 
 
 results = []
@@ -145,8 +125,8 @@ hc.run("postProcess -func writeCellCentres -time 0", case, "log.cellCentres")
 hc.run("postProcess -func writeCellVolumes -time 0", case, "log.cellVolumes")
 hc.run("demInterFoam", case, "log.demInterFoam", timeout=1200)
 
-n, c0 = internal(os.path.join(case, "0/C"), 3)
-_, vol = internal(os.path.join(case, "0/V"), 1)
+n, c0 = vc.internal_field(os.path.join(case, "0/C"), 3)
+_, vol = vc.internal_field(os.path.join(case, "0/V"), 1)
 xy = [(c0[3 * i], c0[3 * i + 1]) for i in range(n)]
 r = [math.hypot(x, y) for x, y in xy]
 Linf = sum(1800 * v * OMEGA * ri * ri for v, ri in zip(vol, r))
@@ -156,7 +136,7 @@ print(f"mesh: {n} cells, area {sum(vol) / DZ:.6g} m2 (pi R^2 = {math.pi * R * R:
 def frame(t):
     """Velocity of each cell at time t: (u_theta, u_r) at the cell's
     current position (the mesh turned by Omega t)."""
-    _, U = internal(os.path.join(case, f"{t:g}", "U"), 3)
+    _, U = vc.internal_field(os.path.join(case, f"{t:g}", "U"), 3)
     ph = OMEGA * t
     cs, sn = math.cos(ph), math.sin(ph)
     out = []

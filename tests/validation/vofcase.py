@@ -3,6 +3,8 @@ uniform box meshes, an initial water field that accounts for axis-aligned
 blocks, the VOF dictionaries, the water-volume log. Uses hedracase."""
 import math
 import os
+import re
+
 import hedracase as hc
 
 RHO_W, RHO_A = 1000.0, 1.0
@@ -338,3 +340,76 @@ def submerged_from_water(centre, q, size, water, area):
             hi = mid
     level = 0.5 * (lo + hi)
     return level, submerged_box_volume(centre, q, size, level)
+
+
+def drum_mesh(case, R, N, M, C, DZ):
+    """blockMeshDict of a 2D drum of radius R about the z axis: an O-grid
+    of five blocks (an inner square of half side C, N x N cells, and four
+    arcs M cells deep), one cell DZ thick; patches shell (wall) and
+    frontAndBack (empty)."""
+    a = R / math.sqrt(2)
+    pts = [(-C, -C), (C, -C), (C, C), (-C, C), (-a, -a), (a, -a), (a, a), (-a, a)]
+    verts = " ".join(f"({x} {y} 0)" for x, y in pts) + " " + \
+        " ".join(f"({x} {y} {DZ})" for x, y in pts)
+    arcs = ""
+    for (i, j), (mx, my) in {(4, 5): (0, -R), (5, 6): (R, 0), (6, 7): (0, R), (7, 4): (-R, 0)}.items():
+        arcs += f"    arc {i} {j} ({mx} {my} 0)\n    arc {i + 8} {j + 8} ({mx} {my} {DZ})\n"
+    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict", f"""
+convertToMeters 1;
+vertices ( {verts} );
+blocks
+(
+    hex (0 1 2 3 8 9 10 11) ({N} {N} 1) simpleGrading (1 1 1)
+    hex (4 5 1 0 12 13 9 8) ({N} {M} 1) simpleGrading (1 1 1)
+    hex (5 6 2 1 13 14 10 9) ({N} {M} 1) simpleGrading (1 1 1)
+    hex (6 7 3 2 14 15 11 10) ({N} {M} 1) simpleGrading (1 1 1)
+    hex (7 4 0 3 15 12 8 11) ({N} {M} 1) simpleGrading (1 1 1)
+);
+edges
+(
+{arcs});
+boundary
+(
+    shell {{ type wall; faces ((4 5 13 12) (5 6 14 13) (6 7 15 14) (7 4 12 15)); }}
+    frontAndBack
+    {{
+        type empty;
+        faces
+        (
+            (0 3 2 1) (4 0 1 5) (5 1 2 6) (6 2 3 7) (7 3 0 4)
+            (8 9 10 11) (12 13 9 8) (13 14 10 9) (14 15 11 10) (15 12 8 11)
+        );
+    }}
+);
+""")
+
+
+def rotating_mesh(case, omega):
+    """dynamicMeshDict turning the whole mesh as a solid body about the z
+    axis at omega rad/s (omega None: a static mesh)."""
+    if omega is None:
+        body = "dynamicFvMesh   staticFvMesh;\n"
+    else:
+        body = f"""dynamicFvMesh   dynamicMotionSolverFvMesh;
+motionSolver    solidBody;
+solidBodyMotionFunction rotatingMotion;
+origin  (0 0 0);
+axis    (0 0 1);
+omega   {omega};
+"""
+    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", body)
+
+
+def internal_field(path, width):
+    """(n, values) of a volScalarField (width 1) or volVectorField (3):
+    n None and one value (or vector) for a uniform field."""
+    txt = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(?:scalar|vector)>\s*(\d+)\s*\(", txt)
+    if m is None:
+        m2 = re.search(r"internalField\s+uniform\s+\(?([^;)]*)\)?;", txt)
+        return None, [float(v) for v in m2.group(1).split()]
+    body = txt[m.end():]
+    n = int(m.group(1))
+    nums = re.findall(r"[-+0-9.eE]+", body.split("\n)\n", 1)[0])
+    vals = [float(v) for v in nums[:n * width]]
+    return n, vals

@@ -103,6 +103,7 @@ Description
 #include "fvOptions.H"
 #include "CorrectPhi.H"
 #include "fvcSmooth.H"
+#include "upwind.H"
 #include "fixedValueFvPatchFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "demCloud.H"
@@ -215,10 +216,21 @@ int main(int argc, char *argv[])
                         // from the mapped surface velocity
                         phi = mesh.Sf() & Uf();
 
-                        #include "correctPhi.H"
+                        if (couplingActive)
+                        {
+                            // Superficial and relative to the moved mesh
+                            // (createCoupling.H); the projection with the
+                            // new void fraction follows (couplingEvolve.H)
+                            phi *= epsf;
+                            makeFluxRelative(phi);
+                        }
+                        else
+                        {
+                            #include "correctPhi.H"
 
-                        // Make the flux relative to the mesh motion
-                        fvc::makeRelative(phi, U);
+                            // Make the flux relative to the mesh motion
+                            fvc::makeRelative(phi, U);
+                        }
 
                         mixture.correct();
                     }

@@ -4,6 +4,7 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "IOmanip.H"
+#include "fvcDdt.H"
 
 namespace Foam
 {
@@ -463,6 +464,21 @@ Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSource() const
 }
 
 
+Foam::tmp<Foam::volScalarField> Foam::demCloud::voidfractionRate() const
+{
+    const volScalarField& eps = exchange_.voidfraction();
+    if (!voidfractionBeforeStep_)
+    {
+        return fvc::ddt(eps);
+    }
+    return tmp<volScalarField>::New
+    (
+        "voidfractionRate",
+        (eps - voidfractionBeforeStep_())/mesh_.time().deltaT()
+    );
+}
+
+
 void Foam::demCloud::evolve
 (
     const volScalarField& nu,
@@ -470,6 +486,44 @@ void Foam::demCloud::evolve
     const surfaceScalarField& alphaPhi
 )
 {
+    const scalar tMoving = io_.elapsedTime();
+
+    // A moving mesh: the particles as they are (the previous step's) on the
+    // moved cells, for the rate at fixed points in space (voidfractionRate)
+    if (mesh_.moving())
+    {
+        if (!voidfractionBeforeStep_)
+        {
+            voidfractionBeforeStep_.reset
+            (
+                new volScalarField
+                (
+                    IOobject
+                    (
+                        "voidfractionBeforeStep",
+                        mesh_.time().timeName(),
+                        mesh_,
+                        IOobject::NO_READ,
+                        IOobject::NO_WRITE,
+                        false
+                    ),
+                    exchange_.voidfraction()
+                )
+            );
+        }
+        weights_.locate(particles_, locate_());
+        weights_.distribute(particles_, shapes_, voidFraction_());
+        exchange_.computeVoidFraction
+        (
+            weights_, volume_, smoothing_(), voidFraction_->alphaMin(),
+            voidfractionBeforeStep_()
+        );
+    }
+    else
+    {
+        voidfractionBeforeStep_.clear();
+    }
+
     const scalar t0 = io_.elapsedTime();
     if (backend_.valid())
     {
@@ -480,7 +534,7 @@ void Foam::demCloud::evolve
     const scalar t2 = io_.elapsedTime();
     computeForces(nu, nuEff, alphaPhi);
     const scalar t3 = io_.elapsedTime();
-    io_.addTimes(t1 - t0, t2 - t1, t3 - t2);
+    io_.addTimes(t1 - t0, t2 - t1 + t0 - tMoving, t3 - t2);
 
     // One line of "name value" pairs per step (foamLog, grep; cumulative
     // CPU seconds of the three parts); the momentum exchange, its

@@ -88,6 +88,8 @@ void Foam::demCouplingWeights::distribute
     const voidFractionModel& voidFraction
 )
 {
+    voidFraction.updateMesh();
+
     const label n = particles.size();
     start_.setSize(n + 1);
     cellIndex_.clear();

@@ -69,6 +69,19 @@ void Foam::demExchangeFields::updateVoidFraction
     const scalar alphaMin
 )
 {
+    computeVoidFraction(weights, volume, smoothing, alphaMin, voidfraction_);
+}
+
+
+void Foam::demExchangeFields::computeVoidFraction
+(
+    const demCouplingWeights& weights,
+    const List<scalar>& volume,
+    const smoothingModel& smoothing,
+    const scalar alphaMin,
+    volScalarField& result
+) const
+{
     const List<label>& start = weights.start();
     const List<label>& cellIndex = weights.cellIndex();
     const List<scalar>& weight = weights.weight();
@@ -93,9 +106,9 @@ void Foam::demExchangeFields::updateVoidFraction
     solid.correctBoundaryConditions();
     smoothing.smooth(solid);
 
-    scalarField& a = voidfraction_.primitiveFieldRef();
+    scalarField& a = result.primitiveFieldRef();
     a = max(1 - s, alphaMin);
-    voidfraction_.correctBoundaryConditions();
+    result.correctBoundaryConditions();
 }
 
 

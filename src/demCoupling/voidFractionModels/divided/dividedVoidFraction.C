@@ -60,6 +60,15 @@ Foam::dividedVoidFraction::dividedVoidFraction
 }
 
 
+void Foam::dividedVoidFraction::updateMesh() const
+{
+    if (mesh_.moving() || mesh_.topoChanging())
+    {
+        bounds_ = boundBox(mesh_.points(), false);
+    }
+}
+
+
 void Foam::dividedVoidFraction::distribute
 (
     const point& c,

@@ -256,8 +256,9 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
     voidFractionModel(modelType, dict, mesh, locate),
     sphereTolerance_(coeffs_.getOrDefault<scalar>("sphereTolerance", 1e-10)),
     meshFaces_(coeffs_.getOrDefault<bool>("meshFaces", true)),
-    bounds_(mesh.points(), false),
-    tree_()
+    bounds_(),
+    tree_(),
+    meshEventIndex_(-1)
 {
     if (!(sphereTolerance_ > 0) || sphereTolerance_ > 0.01)
     {
@@ -265,14 +266,26 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
             << "sphereTolerance must be in (0, 0.01] in " << coeffs_.name()
             << ", got " << sphereTolerance_ << exit(FatalIOError);
     }
+    updateSearch();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::exactOverlapVoidFraction::updateSearch() const
+{
+    meshEventIndex_ = mesh_.time().timeIndex();
+
     // Build the mesh's lazily computed search structures now, on every
     // processor: the tet base points are a collective computation, and a
     // processor that first needs them while the others wait elsewhere
     // (e.g. in the sum of the weights) would hang
-    (void)mesh.tetBasePtIs();
-    (void)mesh.cellPoints();
+    (void)mesh_.tetBasePtIs();
+    (void)mesh_.cellPoints();
 
-    treeBoundBox overallBb(mesh.points());
+    bounds_ = boundBox(mesh_.points(), false);
+
+    treeBoundBox overallBb(mesh_.points());
     Random rndGen(261782);
     overallBb = overallBb.extend(rndGen, 1e-4);
     overallBb.min() -= point::uniform(ROOTVSMALL);
@@ -281,7 +294,7 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
     (
         new indexedOctree<treeDataCell>
         (
-            treeDataCell(true, mesh, polyMesh::CELL_TETS),
+            treeDataCell(true, mesh_, polyMesh::CELL_TETS),
             overallBb,
             8,      // maxLevel
             10,     // leafsize
@@ -291,7 +304,19 @@ Foam::exactOverlapVoidFraction::exactOverlapVoidFraction
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+void Foam::exactOverlapVoidFraction::updateMesh() const
+{
+    // The tree caches the cells' bounding boxes: stale once the points move
+    if
+    (
+        (mesh_.moving() || mesh_.topoChanging())
+     && meshEventIndex_ != mesh_.time().timeIndex()
+    )
+    {
+        updateSearch();
+    }
+}
+
 
 Foam::labelList Foam::exactOverlapVoidFraction::candidates
 (
