@@ -51,8 +51,9 @@ p.add_argument("--fill", type=float, default=4.2 / (math.pi * 1.5 ** 2 * 5.0),
 p.add_argument("--writeInterval", type=float, default=1.0)
 p.add_argument("--mesh", choices=("snappy", "ogrid"), default="snappy",
                help="the fluid mesh: Cartesian cut by snappyHexMesh, or the O-grid")
-p.add_argument("--meshMotion", choices=("rotating", "static"), default="rotating",
-               help="the fluid mesh turns with the shell, or stands with a turning wall")
+p.add_argument("--meshMotion", choices=("rotating", "static"), default="static",
+               help="the fluid mesh stands, its shell wall turning (default), or turns "
+                    "with the shell as a solid body (loses slurry: README)")
 p.add_argument("--smoothing", type=float, default=0.1,
                help="implicitDiffusion length of the particle fields [m] (0: none)")
 p.add_argument("--airNu", type=float, default=1e-2,
@@ -237,6 +238,10 @@ smoothing = ("smoothingModel      none;" if args.smoothing <= 0 else
              f"smoothingModel      implicitDiffusion;\nimplicitDiffusionCoeffs {{ lengthScale {args.smoothing:g}; }}")
 write("constant/couplingProperties", "couplingProperties", f"""
 couplingMode        unresolved;     // balls 52-80 mm, fluid cells ~0.1 m
+// the fluid velocity at the particles from the cell values: the default
+// (flux: the reconstructed flux) is the reconstruction that is unstable on
+// curved meshes (docs/models.md, "Velocity correction")
+fluidVelocity       cell;
 formulation         setI;
 momentumCoupling    implicit;
 locateModel         hinted;
@@ -272,9 +277,13 @@ solvers
 }
 PIMPLE
 {
-    // The O-grid on a rotating mesh (../common/rotatingDrum.py; the test
-    // validation.vofRotatingDrumSpinUp)
-""" + (PIMPLE_O_GRID if args.mesh == "ogrid" else "") + """    momentumPredictor no;
+    // correctPhi after the mesh motion, the motion once per step, and the
+    // pressure part of the velocity correction at the cells
+    // (../common/rotatingDrum.py): interFoam's reconstruction of the
+    // pressure flux grows from round-off on curved meshes (the O-grid, a
+    // polar mesh, the cut cells of this one) with the slurry at rest
+    // (README, "Numerics")
+""" + PIMPLE_O_GRID + """    momentumPredictor no;
     nOuterCorrectors 1;
     nCorrectors 3;
     nNonOrthogonalCorrectors 0;
