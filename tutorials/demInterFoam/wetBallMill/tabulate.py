@@ -16,8 +16,8 @@ from wetMill import (batch_means, case_info, charge_means, charge_rows,  # noqa:
                      dry_reference, fluid_torque)
 
 # ballMill.md: shoulder height, toe height [m], angles as printed [deg]
-SEED = {"noLifters": {"dry": (2.00, 0.72, 19.36, 214.16), "wet": (1.72, 1.08, 6.17, 197.35)},
-        "lifters8": {"dry": (2.62, 0.38, 51.84, 244.18), "wet": (2.37, 0.44, 39.40, 230.19)}}
+SEED = {"noLifters": {"dry": ("2.00", "0.72", "19.36", "214.16"), "wet": ("1.72", "1.08", "6.17", "197.35")},
+        "lifters8": {"dry": ("2.62", "0.38", "51.84", "244.18"), "wet": ("2.37", "0.44", "39.40", "230.19")}}
 
 
 def pm(v, e, d=2):
@@ -78,6 +78,6 @@ for case in sys.argv[1:]:
         print("| %s | wet - dry | %s | %s | %s | %s | - | - | %s | %+.2f, %+.2f | |"
               % (case, pm(m["shoulder"][0] - d["shoulder"][0], math.hypot(m["shoulder"][1], d["shoulder"][1]), 1),
                  pm(m["toe"][0] - d["toe"][0], math.hypot(m["toe"][1], d["toe"][1]), 1),
-                 pm(dsh, esh), pm(dto, eto), pm(dP, eP), ss[0], ss[1]))
+                 pm(dsh, esh, 3), pm(dto, eto, 3), pm(dP, eP), ss[0], ss[1]))
 print()
 print("Means over t = %g-%g s (+- standard errors from 8 batch means)." % (t0, t1))
