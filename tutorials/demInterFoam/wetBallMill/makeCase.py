@@ -56,8 +56,8 @@ p.add_argument("--meshMotion", choices=("rotating", "static"), default="static",
                     "with the shell as a solid body (loses slurry: README)")
 p.add_argument("--smoothing", type=float, default=0.1,
                help="implicitDiffusion length of the particle fields [m] (0: none)")
-p.add_argument("--airNu", type=float, default=1e-2,
-               help="kinematic viscosity of the air [m2/s]")
+p.add_argument("--airNu", type=float, default=1.48e-5,
+               help="kinematic viscosity of the air [m2/s] (1e-2: README, 'The air')")
 p.add_argument("--tCouple", type=float, default=2.5,
                help="start of the wet run (the dry filling before it, demFoam)")
 args = p.parse_args()
@@ -222,8 +222,8 @@ write("constant/transportProperties", "transportProperties", f"""
 // The seed's slurry as a Newtonian liquid: specific gravity 1.8, 300 cP
 phases (water air);
 water {{ transportModel Newtonian; nu 1.666666666667e-04; rho 1800; }}
-// air: its viscosity raised to damp the parasitic currents of the free
-// surface in the light phase (README, "What the slurry sees")
+// air (--airNu: a larger viscosity damps the light phase's parasitic
+// currents; README, "Numerics", "The air")
 air {{ transportModel Newtonian; nu {args.airNu:.6g}; rho 1; }}
 sigma 0.07;
 """)
