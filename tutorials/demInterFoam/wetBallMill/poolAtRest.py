@@ -37,7 +37,7 @@ p.add_argument("--mesh", choices=("snappy", "ogrid", "box"), default="snappy",
                help="box: the snappy mesh's Cartesian background, uncut (the control)")
 p.add_argument("--solver", choices=("interFoam", "demInterFoam"), default="interFoam")
 p.add_argument("--velocityCorrection", choices=("reconstruct", "gradient"), default=None,
-               help="demInterFoam only (default: the mesh's: gradient on the O-grid)")
+               help="demInterFoam only (default: makeCase.py's, gradient)")
 p.add_argument("--airNu", type=float, default=1.48e-5)
 p.add_argument("--endTime", type=float, default=0.2)
 p.add_argument("--keep", action="store_true", help="keep the case folder")
