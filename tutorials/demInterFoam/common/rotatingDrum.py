@@ -15,7 +15,9 @@ the test tests/validation/vofRotatingDrumSpinUp.py):
   PIMPLE_O_GRID      the PIMPLE entries this mesh needs: with interFoam's
                      default velocity correction (reconstruct) the solver
                      diverges from rest on this O-grid, as interFoam itself
-                     does, within 6 steps (docs/models.md, "Velocity
+                     does, within 6 steps; gradient is stable but breaks
+                     the balance of pressure and gravity at a free surface;
+                     gaussBalance keeps it (docs/models.md, "Velocity
                      correction"); correctPhi after the mesh motion, and
                      the motion once per time step
   shell_polygon      the mesh's cross-section (the shell's faces are chords
@@ -27,7 +29,7 @@ import math
 
 PIMPLE_O_GRID = """    correctPhi yes;
     moveMeshOuterCorrectors no;
-    velocityCorrection gradient;
+    velocityCorrection gaussBalance;
 """
 
 

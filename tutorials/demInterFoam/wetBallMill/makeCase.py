@@ -278,11 +278,11 @@ solvers
 PIMPLE
 {
     // correctPhi after the mesh motion, the motion once per step, and the
-    // pressure part of the velocity correction at the cells
-    // (../common/rotatingDrum.py): interFoam's reconstruction of the
-    // pressure flux grows from round-off on curved meshes (the O-grid, a
-    // polar mesh, the cut cells of this one) with the slurry at rest
-    // (README, "Numerics")
+    // velocity correction gaussBalance (../common/rotatingDrum.py):
+    // interFoam's reconstruction of the pressure flux grows from round-off
+    // on curved meshes (the O-grid, a polar mesh, the cut cells of this
+    // one) with the slurry at rest, gradient breaks the balance of pressure
+    // and gravity at the free surface (README, "Numerics")
 """ + PIMPLE_O_GRID + """    momentumPredictor no;
     nOuterCorrectors 1;
     nCorrectors 3;

@@ -5,7 +5,7 @@ static mesh, shell at rest) should stay at rest; on the mill's fluid meshes
 it does not, in interFoam v1912 itself as in demInterFoam.
 
     python3 poolAtRest.py [--mesh snappy|ogrid] [--solver interFoam|demInterFoam]
-                          [--velocityCorrection reconstruct|gradient]
+                          [--velocityCorrection reconstruct|gradient|gaussBalance]
                           [--airNu 1.48e-5] [--endTime 0.2] [--keep]
 
 The control, --mesh box: the same pool in the uncut Cartesian background
@@ -36,8 +36,8 @@ p = argparse.ArgumentParser(description=__doc__,
 p.add_argument("--mesh", choices=("snappy", "ogrid", "box"), default="snappy",
                help="box: the snappy mesh's Cartesian background, uncut (the control)")
 p.add_argument("--solver", choices=("interFoam", "demInterFoam"), default="interFoam")
-p.add_argument("--velocityCorrection", choices=("reconstruct", "gradient"), default=None,
-               help="demInterFoam only (default: makeCase.py's, gradient)")
+p.add_argument("--velocityCorrection", choices=("reconstruct", "gradient", "gaussBalance"), default=None,
+               help="demInterFoam only (default: makeCase.py's, gaussBalance)")
 p.add_argument("--airNu", type=float, default=1.48e-5)
 p.add_argument("--endTime", type=float, default=0.2)
 p.add_argument("--keep", action="store_true", help="keep the case folder")
