@@ -4,8 +4,13 @@ blocks, the VOF dictionaries, the water-volume log. Uses hedracase."""
 import math
 import os
 import re
+import sys
 
 import hedracase as hc
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "../../tutorials/demInterFoam/common"))
+import rotatingDrum  # noqa: E402
 
 RHO_W, RHO_A = 1000.0, 1.0
 NU_W, NU_A = 1e-6, 1.48e-5
@@ -346,42 +351,10 @@ def drum_mesh(case, R, N, M, C, DZ):
     """blockMeshDict of a 2D drum of radius R about the z axis: an O-grid
     of five blocks (an inner square of half side C, N x N cells, and four
     arcs M cells deep), one cell DZ thick; patches shell (wall) and
-    frontAndBack (empty)."""
-    a = R / math.sqrt(2)
-    pts = [(-C, -C), (C, -C), (C, C), (-C, C), (-a, -a), (a, -a), (a, a), (-a, a)]
-    verts = " ".join(f"({x} {y} 0)" for x, y in pts) + " " + \
-        " ".join(f"({x} {y} {DZ})" for x, y in pts)
-    arcs = ""
-    for (i, j), (mx, my) in {(4, 5): (0, -R), (5, 6): (R, 0), (6, 7): (0, R), (7, 4): (-R, 0)}.items():
-        arcs += f"    arc {i} {j} ({mx} {my} 0)\n    arc {i + 8} {j + 8} ({mx} {my} {DZ})\n"
-    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict", f"""
-convertToMeters 1;
-vertices ( {verts} );
-blocks
-(
-    hex (0 1 2 3 8 9 10 11) ({N} {N} 1) simpleGrading (1 1 1)
-    hex (4 5 1 0 12 13 9 8) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (5 6 2 1 13 14 10 9) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (6 7 3 2 14 15 11 10) ({N} {M} 1) simpleGrading (1 1 1)
-    hex (7 4 0 3 15 12 8 11) ({N} {M} 1) simpleGrading (1 1 1)
-);
-edges
-(
-{arcs});
-boundary
-(
-    shell {{ type wall; faces ((4 5 13 12) (5 6 14 13) (6 7 15 14) (7 4 12 15)); }}
-    frontAndBack
-    {{
-        type empty;
-        faces
-        (
-            (0 3 2 1) (4 0 1 5) (5 1 2 6) (6 2 3 7) (7 3 0 4)
-            (8 9 10 11) (12 13 9 8) (13 14 10 9) (14 15 11 10) (15 12 8 11)
-        );
-    }}
-);
-""")
+    frontAndBack (empty). The wet mill tutorial's recipe
+    (tutorials/demInterFoam/common/rotatingDrum.py)."""
+    hc.foamfile(os.path.join(case, "system/blockMeshDict"), "blockMeshDict",
+                rotatingDrum.o_grid_block_mesh(R, N, M, C, 0.0, DZ))
 
 
 def rotating_mesh(case, omega):
@@ -390,13 +363,7 @@ def rotating_mesh(case, omega):
     if omega is None:
         body = "dynamicFvMesh   staticFvMesh;\n"
     else:
-        body = f"""dynamicFvMesh   dynamicMotionSolverFvMesh;
-motionSolver    solidBody;
-solidBodyMotionFunction rotatingMotion;
-origin  (0 0 0);
-axis    (0 0 1);
-omega   {omega};
-"""
+        body = rotatingDrum.dynamic_mesh_dict(omega)
     hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", body)
 
 

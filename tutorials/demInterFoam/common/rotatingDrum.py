@@ -1,6 +1,6 @@
 """A drum's fluid mesh turning with its shell as a solid body, for
 demInterFoam (the wet ball mill, tutorials/demInterFoam/wetBallMill, and
-the test tests/validation/vofRotatingDrumSpinUp.py):
+the tests through tests/validation/vofcase.py: drum_mesh, rotating_mesh):
 
   o_grid_block_mesh  blockMeshDict body of an O-grid of a circle of radius R
                      about the z axis (an inner square of half side C with
