@@ -19,22 +19,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 import millCorrelations as mc
+from tabulate import means  # noqa: E402  (mean, error, samples) per quantity
 
 # The tutorial's mill (chargeNumbers.py): D, slice length, filling, bed solid
 # fraction, ball density
 D, L, J, SOLID, RHO = 3.0, 0.2, 0.35, 0.6, 7200.0
 RHO_C = SOLID * RHO
-
-
-def means(case):
-    m = {}
-    for f in glob.glob(case + "/postProcessing/charge/*/chargeMean.dat"):
-        for line in open(f):
-            if line.startswith("#") or not line.strip():
-                continue
-            q, v, e, n = line.split()
-            m[q.split("[")[0]] = (float(v), float(e), int(n))
-    return m
 
 
 def wallTime(case):

@@ -17,25 +17,26 @@ def means(case):
             if line.startswith("#") or not line.strip():
                 continue
             q, v, e, n = line.split()
-            m[q.split("[")[0]] = (float(v), float(e))
+            m[q.split("[")[0]] = (float(v), float(e), int(n))
     return m
 
 
 def fmt(m, k, scale=1.0, digits=2):
     if k not in m:
         return "-"
-    v, e = m[k]
+    v, e = m[k][:2]
     return "%.*f +- %.*f" % (digits, v * scale, digits, e * scale)
 
 
-print("| case | shoulder deg | toe deg | shoulder height m | toe height m "
-      "| power kW | M g xc omega kW | seed: shoulder h, toe h m | seed: angles as printed deg |")
-print("|---|---|---|---|---|---|---|---|---|")
-for case in sys.argv[1:]:
-    m = means(case)
-    s = SEED.get(case, ("-",) * 4)
-    print("| %s | %s | %s | %s | %s | %s | %s | %s, %s | %s, %s |"
-          % (case, fmt(m, "shoulder", digits=1), fmt(m, "toe", digits=1),
-             fmt(m, "shoulderHeight"), fmt(m, "toeHeight"),
-             fmt(m, "power", 1e-3), fmt(m, "powerGravity", 1e-3),
-             s[0], s[1], s[2], s[3]))
+if __name__ == "__main__":
+    print("| case | shoulder deg | toe deg | shoulder height m | toe height m "
+          "| power kW | M g xc omega kW | seed: shoulder h, toe h m | seed: angles as printed deg |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for case in sys.argv[1:]:
+        m = means(case)
+        s = SEED.get(case, ("-",) * 4)
+        print("| %s | %s | %s | %s | %s | %s | %s | %s, %s | %s, %s |"
+              % (case, fmt(m, "shoulder", digits=1), fmt(m, "toe", digits=1),
+                 fmt(m, "shoulderHeight"), fmt(m, "toeHeight"),
+                 fmt(m, "power", 1e-3), fmt(m, "powerGravity", 1e-3),
+                 s[0], s[1], s[2], s[3]))
