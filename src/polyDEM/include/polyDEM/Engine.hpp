@@ -75,6 +75,24 @@ struct WallLoadSum
     std::int64_t steps = 0;
 };
 
+//- Where the particles' mechanical energy went, summed over the steps since
+//  the enabling or the last reset [J]: dissipated by the contacts (the
+//  normal and tangential dashpots, Coulomb sliding, rolling and twisting
+//  resistance), and put in by the moving walls (the work of each wall
+//  contact's force and moment at the wall's velocity there). Over a stretch
+//  of steps, wallWork + work of gravity and of the external forces
+//  = dissipation + change of kinetic and elastic energy, to the step's
+//  discretisation error (the balance the tests check).
+struct EnergyFlows
+{
+    double pairDissipation = 0;   //!< particle-particle contacts
+    double wallDissipation = 0;   //!< particle-wall contacts
+    double wallWork = 0;          //!< done by the walls on the particles
+    std::int64_t steps = 0;
+
+    double dissipation() const { return pairDissipation + wallDissipation; }
+};
+
 class Engine
 {
 public:
@@ -121,6 +139,15 @@ public:
     //- The loads summed over the steps since the last reset (or the enabling)
     virtual WallLoadSum wallLoadSum() const = 0;
     virtual void resetWallLoadSum() = 0;
+
+    //- Energy flows (EnergyFlows): off until enabled, as they cost a few
+    //  operations per contact and a sum over the particles per step. Summed
+    //  in fixed blocks in particle order, as the wall loads. The particle
+    //  dynamics do not change.
+    virtual void enableEnergyFlows(bool on) = 0;
+    virtual bool energyFlowsEnabled() const = 0;
+    virtual EnergyFlows energyFlows() const = 0;
+    virtual void resetEnergyFlows() = 0;
 
     //- The particles removed (domain, outlets) since the last call, in the
     //  order of the removal passes and, within one, of the particle order

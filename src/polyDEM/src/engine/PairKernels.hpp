@@ -27,6 +27,9 @@ struct PairLists
     //  stays apart is rejected with one projection instead of the face tests.
     //  Only a hint: the result does not depend on it. Zero = none.
     Vec3* separatingAxis;
+    //- Energy each touching pair dissipated in the step [J] (per-pair kernel
+    //  with energy flows on; null otherwise)
+    double* dissipation;
 };
 
 //- One contact of law Law between particles of kinds Kind: kinematics, law,
@@ -50,7 +53,8 @@ struct PairContact
         }
     }
 
-    PD_CONTACT bool operator()(int a, int k, Vec3& F, Vec3& Ta, Vec3& Tb) const
+    //- D: the energy the contact dissipated in the step (0 unless law.accountEnergy)
+    PD_CONTACT bool operator()(int a, int k, Vec3& F, Vec3& Ta, Vec3& Tb, double& D) const
     {
         const int b = pl.partner[k];
         const Vec3 d = p.pos[b] - p.pos[a];
@@ -109,6 +113,7 @@ struct PairContact
         F = res.force;
         Ta = cross(armA, res.force) + res.rollingTorque;
         Tb = cross(armB, -res.force) - res.rollingTorque;
+        D = res.dissipated;
         return true;
     }
 };
@@ -122,25 +127,30 @@ struct PairKernel
     PairContact<Law, Kind> contact;
     Vec3* ownForce;
     Vec3* ownTorque;
+    double* ownDissipation;   //!< energy flows on: its pairs' dissipation; else null
 
     PD_HD void operator()(int i) const
     {
         Vec3 F, T;
+        double D = 0;
         const PairLists& pl = contact.pl;
         const int end = pl.start[i + 1];
         for (int k = pl.start[i]; k < end; ++k)
         {
             Vec3 f, ta, tb;
-            if (contact(i, k, f, ta, tb))
+            double d;
+            if (contact(i, k, f, ta, tb, d))
             {
                 F += f;
                 T += ta;
+                D += d;
                 pl.force[k] = f;
                 pl.torqueB[k] = tb;
             }
         }
         ownForce[i] = F;
         ownTorque[i] = T;
+        if (ownDissipation) ownDissipation[i] = D;
     }
 };
 
@@ -155,11 +165,13 @@ struct PairPerPairKernel
     {
         const PairLists& pl = contact.pl;
         Vec3 f, ta, tb;
-        if (contact(pl.owner[k], k, f, ta, tb))
+        double d;
+        if (contact(pl.owner[k], k, f, ta, tb, d))
         {
             pl.force[k] = f;
             pl.torqueA[k] = ta;
             pl.torqueB[k] = tb;
+            if (pl.dissipation) pl.dissipation[k] = d;
         }
     }
 };

@@ -335,6 +335,38 @@ public:
         wallLoadSteps_ = 0;
     }
 
+    void enableEnergyFlows(bool on) override
+    {
+        if (on == energyOn_) return;
+        energyOn_ = on;
+        law_.accountEnergy = on;
+        energyFlow_.clear();
+        pairDissipation_.clear();
+        ownDissipation_.clear();
+        energySum_.assign(on ? 1 : 0, EnergyFlow());
+        energySteps_ = 0;
+    }
+
+    bool energyFlowsEnabled() const override { return energyOn_; }
+
+    EnergyFlows energyFlows() const override
+    {
+        EnergyFlows e;
+        if (!energyOn_) return e;
+        const EnergyFlow s = toHost(energySum_)[0];
+        e.pairDissipation = s.pairDissipation;
+        e.wallDissipation = s.wallDissipation;
+        e.wallWork = s.wallWork;
+        e.steps = energySteps_;
+        return e;
+    }
+
+    void resetEnergyFlows() override
+    {
+        thrust::fill(thrust::device, energySum_.begin(), energySum_.end(), EnergyFlow());
+        energySteps_ = 0;
+    }
+
     std::vector<RemovedParticle> takeRemoved() override
     {
         std::vector<RemovedParticle> out;
@@ -478,6 +510,7 @@ private:
             // Forces and the second half kick in the same pass
             forcesWith<Law, Kind, true>();
             reduceWallLoads(true);
+            reduceEnergyFlows();
         }
     }
 
@@ -556,6 +589,7 @@ private:
         time0_ = time_;
         step0_ = step_;
         law_ = lawParameters(config_.contact, config_.timeStep);
+        law_.accountEnergy = energyOn_;
 
         const int nm = int(config_.materials.size());
         std::vector<PairCoefficients> pc(nm * nm);
@@ -1095,6 +1129,23 @@ private:
                                        ptr(wallLoadCurrent_), ptr(wallLoadSum_)});
     }
 
+    //- A step's energy flows (the particles' shares of the force pass, in
+    //  fixed blocks in particle order) added to the running sum
+    void reduceEnergyFlows()
+    {
+        if (!energyOn_) return;
+        ++energySteps_;
+        const int n = int(id_.size());
+        if (n == 0 || energyFlow_.size() != size_t(n)) return;
+        const auto first = thrust::counting_iterator<int>(0);
+        const int nBlocks = (n + energyFlowBlock - 1) / energyFlowBlock;
+        energyBlocks_.resize(nBlocks);
+        thrust::for_each(thrust::device, first, first + nBlocks,
+                         EnergyFlowBlocks{ptr(energyFlow_), n, ptr(energyBlocks_)});
+        thrust::for_each(thrust::device, first, first + 1,
+                         EnergyFlowTotal{ptr(energyBlocks_), nBlocks, ptr(energySum_)});
+    }
+
     //- The shares of the force pass (null when wall loads are off)
     WallShares wallShares()
     {
@@ -1125,6 +1176,20 @@ private:
                      rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_), ptr(pairForce_),
                      nullptr, ptr(pairTorqueB_), pairAxis_.empty() ? nullptr : ptr(pairAxis_)};
         const int nPairs = int(pairPartner_.size());
+        EnergyFlow* energy = nullptr;
+        double* ownDissipation = nullptr;
+        if (energyOn_)
+        {
+            energyFlow_.resize(n);
+            energy = ptr(energyFlow_);
+#ifdef __CUDACC__
+            pairDissipation_.resize(nPairs);
+            pl.dissipation = ptr(pairDissipation_);
+#else
+            ownDissipation_.resize(n);
+            ownDissipation = ptr(ownDissipation_);
+#endif
+        }
 #ifdef __CUDACC__
         constexpr bool ownFromPairs = true;
         pl.torqueA = ptr(pairTorqueA_);
@@ -1139,7 +1204,8 @@ private:
         if (!serial)
         {
             thrust::for_each(thrust::device, first, first + n,
-                             PairKernel<Law, Kind>{PairContact<Law, Kind>{pv, lv, pl}, ptr(ownForce_), ptr(ownTorque_)});
+                             PairKernel<Law, Kind>{PairContact<Law, Kind>{pv, lv, pl}, ptr(ownForce_), ptr(ownTorque_),
+                                                   ownDissipation});
         }
 #endif
         (void)nPairs;
@@ -1166,6 +1232,8 @@ private:
             k.planeMr = rolling ? ptr(planeMr_) : nullptr;
             k.wallContactCount = ptr(wallContactCount_);
             k.shares = shares;
+            k.energy = energy;
+            k.ownDissipation = ownDissipation;
             thrust::for_each(thrust::device, first, first + n, k);
         };
         if (nMesh == 0)
@@ -1188,6 +1256,7 @@ private:
                 k.planeMr = rolling ? ptr(planeMr_) : nullptr;
                 k.wallContactCount = ptr(wallContactCount_);
                 k.shares = shares;
+                k.energy = energy;
                 serialSums_.resize(n);
                 SerialStep<Law, Kind, Kick>{PairContact<Law, Kind>{pv, lv, pl}, k, ptr(serialSums_)}.run(n);
                 return;
@@ -1211,6 +1280,7 @@ private:
         m.meshSlots = ptr(meshSlots_);
         m.wallContactCount = ptr(wallContactCount_);
         m.shares = shares;
+        m.energy = energy;
         thrust::for_each(thrust::device, first, first + n, m);
     }
 
@@ -1344,6 +1414,14 @@ private:
     dvec<WallLoadPoint> wallLoadPoints_;
     std::vector<WallLoadPoint> wallLoadPointsHost_;
     int64_t wallLoadSteps_ = 0;
+
+    // Energy flows (off unless enabled): per-particle shares of a step
+    // (pairs' dissipation: per pair on the GPU, per owner on the CPU),
+    // block sums, and the running sum over steps
+    bool energyOn_ = false;
+    dvec<EnergyFlow> energyFlow_, energyBlocks_, energySum_;
+    dvec<double> pairDissipation_, ownDissipation_;
+    int64_t energySteps_ = 0;
 
     // Outlet boxes and the particles removed since the last takeRemoved()
     dvec<Vec3> outletLo_, outletHi_;

@@ -50,6 +50,23 @@ struct WallShare
     }
 };
 
+//- One particle's energy flows in one step [J] (Engine::enableEnergyFlows):
+//  what its contacts dissipated (the pairs it is body 1 of, its wall
+//  contacts) and the work the moving walls did on it through those contacts
+struct EnergyFlow
+{
+    double pairDissipation = 0;
+    double wallDissipation = 0;
+    double wallWork = 0;
+
+    PD_HD void add(const EnergyFlow& q)
+    {
+        pairDissipation += q.pairDissipation;
+        wallDissipation += q.wallDissipation;
+        wallWork += q.wallWork;
+    }
+};
+
 //- Per particle nWalls shares (planes, then meshes), null when wall loads are
 //  off; the plane pass clears a particle's shares before its walls add to them
 struct WallShares
@@ -94,7 +111,7 @@ struct WallContact
     PD_CONTACT void point
     (
         int i, int material, const Vec3& wallPoint, const Vec3& wallVel, const Vec3& wallOmega,
-        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load,
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load, EnergyFlow* flow,
         const Vec3* planeNormal = nullptr, double signedDistance = 0
     ) const
     {
@@ -128,6 +145,15 @@ struct WallContact
         F += res.force;
         T += t;
         if (load) load->addContact(res.force, t, dot(res.force, k.normal) * k.normal);
+        if (flow) account(res, wallVel, wallOmega, *flow);
+    }
+
+    //- A wall contact's energy flows: its dissipation, and the work of its
+    //  force and moment at the wall's velocity there (the wall's drive)
+    PD_HD void account(const ContactResult& res, const Vec3& wallVel, const Vec3& wallOmega, EnergyFlow& flow) const
+    {
+        flow.wallDissipation += res.dissipated;
+        flow.wallWork += (dot(res.force, wallVel) + dot(res.rollingTorque, wallOmega)) * law.law.dt;
     }
 
     //- Volumetric contact. ov.normal points from the wall into the particle;
@@ -135,7 +161,7 @@ struct WallContact
     PD_HD void volumetric
     (
         int i, int material, const OverlapResult& ov, const Vec3& wallVel, const Vec3& wallOmega,
-        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load
+        Vec3& xi, Vec3& mr, Vec3& F, Vec3& T, WallShare* load, EnergyFlow* flow
     ) const
     {
         const Vec3 x = p.pos[i];
@@ -158,6 +184,7 @@ struct WallContact
         F += res.force;
         T += t;
         if (load) load->addContact(res.force, t, dot(res.force, k.normal) * k.normal);
+        if (flow) account(res, wallVel, wallOmega, *flow);
     }
 };
 
@@ -194,6 +221,8 @@ struct ParticleForces
     Vec3* planeMr;          //!< null without a rolling model
     int* wallContactCount;
     WallShares shares;      //!< wall loads (share null: off)
+    EnergyFlow* energy = nullptr;   //!< per particle, energy flows on; else null
+    const double* ownDissipation = nullptr;   //!< PairKernel's sums (energy on, !OwnFromPairs)
 
     //- Gravity and the external force and torque of particle i
     PD_HD void base(int i, Vec3& F, Vec3& T) const
@@ -245,21 +274,28 @@ struct ParticleForces
                 ++walls;
                 wall.volumetric(i, pl.material, ov, pl.motion.velocityAt(ov.centroid),
                                 pl.motion.angularVelocity(), planeXi[c], mr, F, T,
-                                shares.plane(i, planePlane[c]));
+                                shares.plane(i, planePlane[c]), energy ? energy + i : nullptr);
                 continue;
             }
             ++walls;
             wall.point(i, pl.material, foot, pl.motion.velocityAt(foot), pl.motion.angularVelocity(),
-                       planeXi[c], mr, F, T, shares.plane(i, planePlane[c]), &n, h);
+                       planeXi[c], mr, F, T, shares.plane(i, planePlane[c]), energy ? energy + i : nullptr,
+                       &n, h);
         }
         return walls;
     }
 
-    //- Walls, store, kick: the end of particle i's step once its pair sums are in
-    PD_HD void finish(int i, Vec3 F, Vec3 T) const
+    //- Walls, store, kick: the end of particle i's step once its pair sums are
+    //  in (pairDissipation: of the pairs it is body 1 of, energy flows on)
+    PD_HD void finish(int i, Vec3 F, Vec3 T, double pairDissipation) const
     {
         const ParticleView& p = wall.p;
         shares.clear(i);
+        if (energy)
+        {
+            energy[i] = EnergyFlow();
+            energy[i].pairDissipation = pairDissipation;
+        }
         wallContactCount[i] = planeContacts(i, F, T);
         p.force[i] = F;
         p.torque[i] = T;
@@ -283,6 +319,7 @@ struct ParticleForces
             T += pairs.torqueB[k];
         }
         Vec3 Fo, To;
+        double Do = 0;
         const int end = pairs.start[i + 1];
         for (int k = pairs.start[i]; k < end; ++k)
         {
@@ -292,17 +329,19 @@ struct ParticleForces
             {
                 Fo += pairs.force[k];
                 To += pairs.torqueA[k];
+                if (energy) Do += pairs.dissipation[k];
             }
         }
         if (!OwnFromPairs)
         {
             Fo = ownForce[i];
             To = ownTorque[i];
+            if (energy) Do = ownDissipation[i];
         }
         F += Fo;
         T += To;
         contactCount[i] = touching;
-        finish(i, F, T);
+        finish(i, F, T, Do);
     }
 };
 
@@ -341,6 +380,7 @@ struct SerialStep
         for (int i = 0; i < n; ++i)
         {
             Vec3 Fo, To;
+            double Do = 0;
             int touching = sums[i].contacts;
             const int end = pl.start[i + 1];
             for (int k = pl.start[i]; k < end; ++k)
@@ -358,17 +398,19 @@ struct SerialStep
                     __builtin_prefetch(sums + ahead);
                 }
                 Vec3 f, ta, tb;
-                if (!contact(i, k, f, ta, tb)) continue;
+                double d;
+                if (!contact(i, k, f, ta, tb, d)) continue;
                 ++touching;
                 Fo += f;
                 To += ta;
+                Do += d;
                 ForceSum& partner = sums[pl.partner[k]];
                 partner.force -= f;
                 partner.torque += tb;
                 ++partner.contacts;
             }
             forces.contactCount[i] = touching;
-            forces.finish(i, sums[i].force + Fo, sums[i].torque + To);
+            forces.finish(i, sums[i].force + Fo, sums[i].torque + To, Do);
         }
     }
 };
@@ -391,6 +433,7 @@ struct MeshWallKernel
     MeshSlot* meshSlots;     //!< per particle maxMeshSlots slots
     int* wallContactCount;
     WallShares shares;       //!< wall loads (share null: off); cleared by ParticleForces
+    EnergyFlow* energy = nullptr;   //!< energy flows (null: off); set by ParticleForces
 
     PD_HD void operator()(int i) const
     {
@@ -443,7 +486,8 @@ struct MeshWallKernel
                     }
                     ++walls;
                     wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
-                                          mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
+                                    mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w),
+                                    energy ? energy + i : nullptr);
                     MeshSlot& ns = next[nNext++];
                     ns.mesh = w;
                     ns.triangle = tri;
@@ -542,12 +586,14 @@ struct MeshWallKernel
                     // tangent plane at the closest point
                     const OverlapResult ov = sphereHalfSpaceOverlap(xi_, ri, wallPoint, -nWorld);
                     wall.volumetric(i, mesh.material, ov, mesh.motion.velocityAt(ov.centroid),
-                                          mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
+                                    mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w),
+                                    energy ? energy + i : nullptr);
                 }
                 else
                 {
                     wall.point(i, mesh.material, wallPoint, mesh.motion.velocityAt(wallPoint),
-                                mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w));
+                               mesh.motion.angularVelocity(), sxi, smr, F, T, shares.mesh(i, w),
+                               energy ? energy + i : nullptr);
                 }
                 MeshSlot& ns = next[nNext++];
                 ns.mesh = w;
@@ -632,6 +678,40 @@ struct WallLoadTotal
         }
         current[w] = s;
         if (accumulate) sum[w].addShare(s);
+    }
+};
+
+//- Particles per block of the energy-flow sum: fixed, as for the wall loads
+constexpr int energyFlowBlock = 256;
+
+//- One block: its particles' energy flows in particle order
+struct EnergyFlowBlocks
+{
+    const EnergyFlow* flow;
+    int n;
+    EnergyFlow* blockSum;
+
+    PD_HD void operator()(int b) const
+    {
+        EnergyFlow s;
+        const int end = (b + 1) * energyFlowBlock < n ? (b + 1) * energyFlowBlock : n;
+        for (int i = b * energyFlowBlock; i < end; ++i) s.add(flow[i]);
+        blockSum[b] = s;
+    }
+};
+
+//- The blocks in order, added to the running sum (one thread)
+struct EnergyFlowTotal
+{
+    const EnergyFlow* blockSum;
+    int nBlocks;
+    EnergyFlow* sum;
+
+    PD_HD void operator()(int) const
+    {
+        EnergyFlow s;
+        for (int b = 0; b < nBlocks; ++b) s.add(blockSum[b]);
+        sum->add(s);
     }
 };
 

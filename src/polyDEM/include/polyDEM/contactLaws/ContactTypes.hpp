@@ -32,6 +32,9 @@ struct LawParameters
     double volumetricStiffness = 0;    //!< overlapVolume law [N/m3]
     double tangentialStiffnessRatio = 2.0 / 7.0;
     double dt = 0;
+    //- Also return the energy each contact dissipates (ContactResult::dissipated):
+    //  a diagnostic, off unless Engine::enableEnergyFlows asks for it
+    bool accountEnergy = false;
 };
 
 //- Geometry and kinematics of one contact, from body 1's point of view
@@ -53,6 +56,10 @@ struct ContactResult
     Vec3 force;           //!< on body 1 (body 2 gets the opposite)
     Vec3 rollingTorque;   //!< on body 1 (body 2 gets the opposite): rolling + twisting
     double normalForce = 0;
+    //- Energy dissipated by the contact in this step [J], >= 0 up to the
+    //  step's round-off (law.accountEnergy; else 0): the normal and tangential
+    //  dashpots, Coulomb sliding, rolling and twisting resistance
+    double dissipated = 0;
 };
 
 //- Whether a contact needs the rolling/spin inertias (rolling or twisting resistance)

@@ -18,10 +18,11 @@ namespace polydem
 {
 
 //- Rolling torque on body 1; mr: the EPSD spring torque of the contact (history)
+//  dissipated (null: not wanted): += the energy the torque dissipates in the step [J]
 PD_HD inline Vec3 rollingTorque
 (
     const LawParameters& law, const PairCoefficients& pc, const ContactKinematics& k,
-    double kn, double fn, Vec3& mr
+    double kn, double fn, Vec3& mr, double* dissipated = nullptr
 )
 {
     const Vec3& n = k.normal;
@@ -36,29 +37,42 @@ PD_HD inline Vec3 rollingTorque
             // within one step (prevents chatter at rest)
             const double mStop = (k.rollingInertia > 0) ? k.rollingInertia * w / law.dt : mMax;
             const double m = mMax < mStop ? mMax : mStop;
+            if (dissipated) *dissipated += m * w * law.dt;
             return (-m / w) * wr;
         }
         return Vec3();
     }
     const double kr = 2.25 * kn * pc.rollingFriction * pc.rollingFriction * k.rStar * k.rStar;
     mr -= dot(mr, n) * n;
+    const double mrOldSqr = dissipated ? normSqr(mr) : 0.0;
     mr -= (kr * law.dt) * wr;
     const double mLen = norm(mr);
     Vec3 md;
     if (mLen > mMax)
     {
         mr *= (mLen > 0 ? mMax / mLen : 0.0);
+        // Fully mobilised: the work on the rolling less what the spring keeps
+        if (dissipated && kr > 0)
+        {
+            *dissipated += -dot(mr, wr) * law.dt - 0.5 * (normSqr(mr) - mrOldSqr) / kr;
+        }
     }
     else
     {
         const double cr = pc.rollingDamping * 2.0 * sqrt(k.rollingInertia * kr);
         md = -cr * wr;
+        if (dissipated) *dissipated += cr * normSqr(wr) * law.dt;
     }
     return mr + md;
 }
 
 //- Twisting torque on body 1 (about the normal)
-PD_HD inline Vec3 twistingTorque(const LawParameters& law, const PairCoefficients& pc, const ContactKinematics& k, double fn)
+//  dissipated (null: not wanted): += the energy it dissipates in the step [J]
+PD_HD inline Vec3 twistingTorque
+(
+    const LawParameters& law, const PairCoefficients& pc, const ContactKinematics& k, double fn,
+    double* dissipated = nullptr
+)
 {
     const double wn = dot(k.relOmega, k.normal);
     const double w = fabs(wn);
@@ -66,6 +80,7 @@ PD_HD inline Vec3 twistingTorque(const LawParameters& law, const PairCoefficient
     const double mMax = pc.twistingFriction * k.rStar * fn;
     const double mStop = k.spinInertia > 0 ? k.spinInertia * w / law.dt : mMax;
     const double m = mMax < mStop ? mMax : mStop;
+    if (dissipated) *dissipated += m * w * law.dt;
     return (wn > 0 ? -m : m) * k.normal;
 }
 
