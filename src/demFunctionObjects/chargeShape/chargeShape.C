@@ -12,10 +12,13 @@ Description
 #include "addToRunTimeSelectionTable.H"
 #include "mathematicalConstants.H"
 #include "OFstream.H"
+#include "polyDEM/Quaternion.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -65,7 +68,9 @@ Foam::functionObjects::chargeShape::chargeShape
     steadyStart_(0),
     nBatches_(8),
     torqueSteps_(0),
-    steps_(0)
+    steps_(0),
+    dissipated_(0),
+    wallWork_(0)
 {
     initialise();
 }
@@ -210,6 +215,7 @@ void Foam::functionObjects::chargeShape::readSettings
     }
 
     source()->requestWallLoads();
+    source()->requestEnergyFlows();
 }
 
 
@@ -232,6 +238,30 @@ void Foam::functionObjects::chargeShape::accumulate()
     }
     torqueSteps_ += T*src->wallLoadSteps();
     steps_ += src->wallLoadSteps();
+    const polydem::EnergyFlows& f = src->energyFlowSum();
+    dissipated_ += f.dissipation();
+    wallWork_ += f.wallWork;
+}
+
+
+double Foam::functionObjects::chargeShape::mechanicalEnergy
+(
+    const polydem::ParticleState& p
+) const
+{
+    // Kinetic (translation, and rotation about the principal axes, from the
+    // body-frame angular velocity) and gravitational energy of all particles
+    const polydem::Vec3 g = source()->particleConfig().gravity;
+    double e = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        const polydem::Vec3 wb = polydem::rotateInverse(p.orientation[i], p.omega[i]);
+        const polydem::Vec3& I = p.inertia[i];
+        e += 0.5*p.mass[i]*polydem::dot(p.velocity[i], p.velocity[i])
+           + 0.5*(I.x*wb.x*wb.x + I.y*wb.y*wb.y + I.z*wb.z*wb.z)
+           - p.mass[i]*polydem::dot(g, p.position[i]);
+    }
+    return e;
 }
 
 
@@ -335,8 +365,10 @@ void Foam::functionObjects::chargeShape::writeMeans() const
     {
         "shoulder[deg]", "toe[deg]", "toeBelow[deg]", "shoulderHeight[m]",
         "toeHeight[m]", "M[kg]", "xc[m]", "yc[m]", "wallTorque[Nm]",
-        "gravityTorque[Nm]", "power[W]", "powerGravity[W]"
+        "gravityTorque[Nm]", "power[W]", "powerGravity[W]",
+        "dissipation[W]", "wallWorkRate[W]"
     };
+    std::map<std::string, double> means;
     os  << "# chargeShape steady means over t >= " << steadyStart_
         << " with the standard error from " << nBatches_ << " batch means"
         << nl << "# quantity mean stdError samples" << nl;
@@ -377,7 +409,32 @@ void Foam::functionObjects::chargeShape::writeMeans() const
             err = std::sqrt(var/nBatches_);
         }
         os  << names[c] << ' ' << mean << ' ' << err << ' ' << n << nl;
+        means[names[c]] = mean;
     }
+
+    // Energy balance over the window: the samples' power and dissipation
+    // are means over the intervals ending at them, so the window starts at
+    // the sample before its first
+    size_t k0 = 0;
+    while (k0 < times_.size() && times_[k0] < steadyStart_*(1 - 1e-12)) ++k0;
+    double energyRate = noValue, balance = noValue;
+    if (k0 < times_.size())
+    {
+        const size_t a = k0 > 0 ? k0 - 1 : k0;
+        const size_t b = times_.size() - 1;
+        if (times_[b] > times_[a])
+        {
+            energyRate = (energies_[b] - energies_[a])/(times_[b] - times_[a]);
+            const double P = means["power[W]"];
+            if (std::isfinite(P) && P != 0)
+            {
+                balance = (P - means["dissipation[W]"] - energyRate)/P;
+            }
+        }
+    }
+    const label n = label(times_.size() - k0);
+    os  << "energyRate[W] " << energyRate << ' ' << noValue << ' ' << n << nl
+        << "energyBalance[-] " << balance << ' ' << noValue << ' ' << n << nl;
 }
 
 
@@ -391,7 +448,8 @@ void Foam::functionObjects::chargeShape::writeHeader(Ostream& os) const
         << " m, omega " << omega_ << " rad/s" << nl
         << "# time shoulder[deg] toe[deg] toeBelow[deg] shoulderHeight[m] "
         << "toeHeight[m] M[kg] xc[m] yc[m] wallTorque[Nm] gravityTorque[Nm] "
-        << "power[W] powerGravity[W] wallSteps";
+        << "power[W] powerGravity[W] wallSteps dissipation[W] wallWorkRate[W] "
+        << "energy[J]";
 }
 
 
@@ -431,23 +489,34 @@ void Foam::functionObjects::chargeShape::sample
     const double power = -omega_*wallTorque;
     const double powerGravity = gravity_*mx*std::abs(omega_);
 
+    // Energy flows over the same DEM steps as the torque, per second
+    const double span = steps_*source()->particleConfig().timeStep;
+    const double dissipation = span > 0 ? dissipated_/span : noValue;
+    const double wallWorkRate = span > 0 ? wallWork_/span : noValue;
+    const double energy = mechanicalEnergy(p);
+
     const std::vector<scalar> row
     ({
         shoulder, toe, toe - 180, sh, th, M, xc, yc, wallTorque,
-        gravityTorque, power, powerGravity
+        gravityTorque, power, powerGravity, dissipation, wallWorkRate
     });
     OFstream& os = file();
     os  << t;
-    for (const scalar v : row)
+    for (size_t c = 0; c < row.size(); ++c)
     {
-        os  << ' ' << v;
+        // wallSteps stays the 14th column, as before the energy columns
+        if (c == 12) os  << ' ' << steps_;
+        os  << ' ' << row[c];
     }
-    os  << ' ' << steps_ << endl;
+    os  << ' ' << energy << endl;
     times_.push_back(t);
     rows_.push_back(row);
+    energies_.push_back(energy);
 
     torqueSteps_ = 0;
     steps_ = 0;
+    dissipated_ = 0;
+    wallWork_ = 0;
 }
 
 

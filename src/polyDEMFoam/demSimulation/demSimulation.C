@@ -154,6 +154,10 @@ void Foam::demSimulation::startSystem(polydem::Snapshot state)
     {
         system_->engine().enableWallLoads(true);
     }
+    if (energyFlowsRequested_)
+    {
+        system_->engine().enableEnergyFlows(true);
+    }
 }
 
 
@@ -499,6 +503,32 @@ void Foam::demSimulation::collectWallLoads()
             m.contacts += b*s.sum[k].contacts;
             m.point = s.sum[k].point;
         }
+    }
+}
+
+
+void Foam::demSimulation::collectEnergyFlows()
+{
+    polydem::Engine& engine = system_->engine();
+    if (!engine.energyFlowsEnabled())
+    {
+        return;
+    }
+    const polydem::EnergyFlows f = engine.energyFlows();
+    engine.resetEnergyFlows();
+    energyFlowSum_.pairDissipation += f.pairDissipation;
+    energyFlowSum_.wallDissipation += f.wallDissipation;
+    energyFlowSum_.wallWork += f.wallWork;
+    energyFlowSum_.steps += f.steps;
+}
+
+
+void Foam::demSimulation::requestEnergyFlows() const
+{
+    if (!energyFlowsRequested_)
+    {
+        energyFlowsRequested_ = true;
+        system_->engine().enableEnergyFlows(true);
     }
 }
 
@@ -1271,6 +1301,8 @@ Foam::demSimulation::demSimulation
     wallLoadsRequested_(false),
     wallLoadMean_(),
     wallLoadSteps_(0),
+    energyFlowsRequested_(false),
+    energyFlowSum_(),
     summary_(),
     clock_(),
     wallStart_(0),
@@ -1468,6 +1500,7 @@ void Foam::demSimulation::evolve()
     // The wall loads of this time step only
     wallLoadMean_.assign(wallMap_.size(), polydem::WallLoad());
     wallLoadSteps_ = 0;
+    energyFlowSum_ = polydem::EnergyFlows();
 
     // DEM steps for this fluid step: stepsPerDeltaT_ with a fixed deltaT
     // (checked at the start); a solver that adjusts deltaT
@@ -1521,6 +1554,7 @@ void Foam::demSimulation::evolve()
         system_->advance(next - step);
         collectRemoved();
         collectWallLoads();
+        collectEnergyFlows();
         removeDueWalls();
     }
     report();
