@@ -204,6 +204,17 @@ int main(int argc, char *argv[])
                     if (mesh.topoChanging())
                     {
                         talphaPhi1Corr0.clear();
+
+                        // Refinement: the mesh maps only registered fields.
+                        // eps rho of the momentum equation is not (it is
+                        // named rho for interFoam's scheme names), so it is
+                        // rebuilt on the new cells, old time included, from
+                        // the mapped void fraction and density; the face
+                        // void fraction from the mapped cell values (the
+                        // mesh has no values for the new faces)
+                        rhoEps = eps*rho;
+                        rhoEps.oldTime() = eps.oldTime()*rho.oldTime();
+                        epsf = fvc::interpolate(eps);
                     }
 
                     gh = (g & mesh.C()) - ghRef;
