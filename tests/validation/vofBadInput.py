@@ -21,6 +21,11 @@ no crash, no hang):
      (exclude)                                values (excluded fill transported)
  11. resolved mode, minFluidFraction 1e-5 -> couplingProperties, the range
                                               [0.001, 0.1]
+ 12. resolved mode, refinement { band .. } -> couplingProperties: available
+     (used to be ignored)                     in demIbFoam, not here
+ 13. resolved mode on dynamicRefineFvMesh  -> dynamicMeshDict: not available,
+     (used to stop in a floating-point        the alternatives
+     exception in the first solve)
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -81,6 +86,12 @@ tests = [
     ("minFluidFraction",
      "couplingMode resolved;\ndemBackend polyDEM;\nminFluidFraction 1e-5;\n",
      None, ["minFluidFraction 1e-05", "couplingProperties", "[0.001, 0.1]"]),
+    ("resolvedRefinementEntry",
+     "couplingMode resolved;\ndemBackend polyDEM;\nrefinement { band 5e-3; }\n",
+     None, ["Entry 'refinement'", "couplingProperties", "demIbFoam"]),
+    ("resolvedRefiningMesh",
+     "couplingMode resolved;\ndemBackend polyDEM;\n", "refiningMesh",
+     ["dynamicRefineFvMesh", "dynamicMeshDict", "couplingMode unresolved"]),
 ]
 
 results = []
@@ -96,6 +107,18 @@ for name, coupling, change, expect in tests:
         p = os.path.join(case, "system/fvSchemes")
         txt = open(p).read().replace("default Euler;", "default localEuler;")
         open(p, "w").write(txt)
+    elif change == "refiningMesh":
+        hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", """
+dynamicFvMesh dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{
+    refineInterval 1; field alpha.water;
+    lowerRefineLevel 0.001; upperRefineLevel 0.999; unrefineLevel 10;
+    nBufferLayers 1; maxRefinement 1; maxCells 200000;
+    correctFluxes ((phi none) (nHatf none) (rhoPhi none) (alphaPhi0.water none) (ghf none));
+    dumpLevel false;
+}
+""")
     elif change == "velocityCorrection":
         p = os.path.join(case, "system/fvSolution")
         txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradients;")

@@ -92,6 +92,7 @@ Description
 
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
+#include "dynamicRefineFvMesh.H"
 #include "CMULES.H"
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
@@ -204,6 +205,18 @@ int main(int argc, char *argv[])
                     if (mesh.topoChanging())
                     {
                         talphaPhi1Corr0.clear();
+
+                        if (resolvedMode)
+                        {
+                            // Any other mesh that changes its cells (the
+                            // refining one is refused at the start)
+                            FatalErrorInFunction
+                                << "The mesh changed its cells (constant/"
+                                << "dynamicMeshDict) with couplingMode"
+                                << " resolved: the immersed bodies on a"
+                                << " changing mesh are not available in"
+                                << " demInterFoam" << exit(FatalError);
+                        }
 
                         // Refinement: the mesh maps only registered fields.
                         // eps rho of the momentum equation is not (it is

@@ -70,7 +70,8 @@ Foam::functionObjects::chargeShape::chargeShape
     torqueSteps_(0),
     steps_(0),
     dissipated_(0),
-    wallWork_(0)
+    wallWork_(0),
+    externalWork_(0)
 {
     initialise();
 }
@@ -241,6 +242,7 @@ void Foam::functionObjects::chargeShape::accumulate()
     const polydem::EnergyFlows& f = src->energyFlowSum();
     dissipated_ += f.dissipation();
     wallWork_ += f.wallWork;
+    externalWork_ += f.externalWork;
 }
 
 
@@ -366,7 +368,7 @@ void Foam::functionObjects::chargeShape::writeMeans() const
         "shoulder[deg]", "toe[deg]", "toeBelow[deg]", "shoulderHeight[m]",
         "toeHeight[m]", "M[kg]", "xc[m]", "yc[m]", "wallTorque[Nm]",
         "gravityTorque[Nm]", "power[W]", "powerGravity[W]",
-        "dissipation[W]", "wallWorkRate[W]"
+        "dissipation[W]", "wallWorkRate[W]", "externalWorkRate[W]"
     };
     std::map<std::string, double> means;
     os  << "# chargeShape steady means over t >= " << steadyStart_
@@ -428,7 +430,11 @@ void Foam::functionObjects::chargeShape::writeMeans() const
             const double P = means["power[W]"];
             if (std::isfinite(P) && P != 0)
             {
-                balance = (P - means["dissipation[W]"] - energyRate)/P;
+                balance =
+                    (
+                        P + means["externalWorkRate[W]"]
+                      - means["dissipation[W]"] - energyRate
+                    )/P;
             }
         }
     }
@@ -449,7 +455,7 @@ void Foam::functionObjects::chargeShape::writeHeader(Ostream& os) const
         << "# time shoulder[deg] toe[deg] toeBelow[deg] shoulderHeight[m] "
         << "toeHeight[m] M[kg] xc[m] yc[m] wallTorque[Nm] gravityTorque[Nm] "
         << "power[W] powerGravity[W] wallSteps dissipation[W] wallWorkRate[W] "
-        << "energy[J]";
+        << "externalWorkRate[W] energy[J]";
 }
 
 
@@ -493,12 +499,14 @@ void Foam::functionObjects::chargeShape::sample
     const double span = steps_*source()->particleConfig().timeStep;
     const double dissipation = span > 0 ? dissipated_/span : noValue;
     const double wallWorkRate = span > 0 ? wallWork_/span : noValue;
+    const double externalWorkRate = span > 0 ? externalWork_/span : noValue;
     const double energy = mechanicalEnergy(p);
 
     const std::vector<scalar> row
     ({
         shoulder, toe, toe - 180, sh, th, M, xc, yc, wallTorque,
-        gravityTorque, power, powerGravity, dissipation, wallWorkRate
+        gravityTorque, power, powerGravity, dissipation, wallWorkRate,
+        externalWorkRate
     });
     OFstream& os = file();
     os  << t;
@@ -517,6 +525,7 @@ void Foam::functionObjects::chargeShape::sample
     steps_ = 0;
     dissipated_ = 0;
     wallWork_ = 0;
+    externalWork_ = 0;
 }
 
 

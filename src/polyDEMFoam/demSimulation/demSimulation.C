@@ -519,6 +519,7 @@ void Foam::demSimulation::collectEnergyFlows()
     energyFlowSum_.pairDissipation += f.pairDissipation;
     energyFlowSum_.wallDissipation += f.wallDissipation;
     energyFlowSum_.wallWork += f.wallWork;
+    energyFlowSum_.externalWork += f.externalWork;
     energyFlowSum_.steps += f.steps;
 }
 

@@ -23,7 +23,7 @@ if not rows:
 rows.sort()
 col = {n: k for k, n in enumerate(
     "time shoulder toe toeBelow shoulderHeight toeHeight M xc yc wallTorque "
-    "gravityTorque power powerGravity wallSteps dissipation wallWorkRate energy".split())}
+    "gravityTorque power powerGravity wallSteps dissipation wallWorkRate externalWorkRate energy".split())}
 
 
 def series(name):

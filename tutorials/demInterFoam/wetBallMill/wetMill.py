@@ -10,7 +10,7 @@ import re
 HERE = os.path.dirname(os.path.abspath(__file__))
 DRY_RESULTS = os.path.join(HERE, "..", "..", "demFoam", "ballMill", "reference", "results.md")
 CHARGE_COLS = ("time shoulder toe toeBelow shoulderHeight toeHeight M xc yc wallTorque "
-               "gravityTorque power powerGravity wallSteps dissipation wallWorkRate energy").split()
+               "gravityTorque power powerGravity wallSteps dissipation wallWorkRate externalWorkRate energy").split()
 
 
 def case_info(case):

@@ -78,16 +78,18 @@ struct WallLoadSum
 //- Where the particles' mechanical energy went, summed over the steps since
 //  the enabling or the last reset [J]: dissipated by the contacts (the
 //  normal and tangential dashpots, Coulomb sliding, rolling and twisting
-//  resistance), and put in by the moving walls (the work of each wall
-//  contact's force and moment at the wall's velocity there). Over a stretch
-//  of steps, wallWork + work of gravity and of the external forces
-//  = dissipation + change of kinetic and elastic energy, to the step's
-//  discretisation error (the balance the tests check).
+//  resistance), put in by the moving walls (the work of each wall contact's
+//  force and moment at the wall's velocity there), and by the external
+//  forces and torques (the fluid's: F . v(n+1/2) dt, exact for velocity
+//  Verlet). Over a stretch of steps, wallWork + externalWork + work of
+//  gravity = dissipation + change of kinetic and elastic energy, to the
+//  step's discretisation error (the balance the tests check).
 struct EnergyFlows
 {
     double pairDissipation = 0;   //!< particle-particle contacts
     double wallDissipation = 0;   //!< particle-wall contacts
     double wallWork = 0;          //!< done by the walls on the particles
+    double externalWork = 0;      //!< done by the external forces and torques
     std::int64_t steps = 0;
 
     double dissipation() const { return pairDissipation + wallDissipation; }

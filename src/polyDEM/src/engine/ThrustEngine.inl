@@ -357,6 +357,7 @@ public:
         e.pairDissipation = s.pairDissipation;
         e.wallDissipation = s.wallDissipation;
         e.wallWork = s.wallWork;
+        e.externalWork = s.externalWork;
         e.steps = energySteps_;
         return e;
     }

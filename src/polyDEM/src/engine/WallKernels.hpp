@@ -52,18 +52,21 @@ struct WallShare
 
 //- One particle's energy flows in one step [J] (Engine::enableEnergyFlows):
 //  what its contacts dissipated (the pairs it is body 1 of, its wall
-//  contacts) and the work the moving walls did on it through those contacts
+//  contacts), the work the moving walls did on it through those contacts,
+//  and the work of its external force and torque (the fluid's)
 struct EnergyFlow
 {
     double pairDissipation = 0;
     double wallDissipation = 0;
     double wallWork = 0;
+    double externalWork = 0;
 
     PD_HD void add(const EnergyFlow& q)
     {
         pairDissipation += q.pairDissipation;
         wallDissipation += q.wallDissipation;
         wallWork += q.wallWork;
+        externalWork += q.externalWork;
     }
 };
 
@@ -295,6 +298,11 @@ struct ParticleForces
         {
             energy[i] = EnergyFlow();
             energy[i].pairDissipation = pairDissipation;
+            // The external force is constant over the step and the particle
+            // moved by v(n+1/2) dt in it (velocity Verlet's drift): its work,
+            // exactly the kinetic energy it adds; the torque's at w(n+1/2)
+            if (p.extForce) energy[i].externalWork += dot(p.extForce[i], p.vel[i]) * dt;
+            if (p.extTorque) energy[i].externalWork += dot(p.extTorque[i], p.omega[i]) * dt;
         }
         wallContactCount[i] = planeContacts(i, F, T);
         p.force[i] = F;

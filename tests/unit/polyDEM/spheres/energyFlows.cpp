@@ -12,6 +12,11 @@
 //     elastic-plastic spring-dashpot) dissipates all its kinetic energy (1 %);
 //   - an off-centre pair dissipates the kinetic energy it loses (0.2 %), and the
 //     running dissipation never decreases;
+//   - an external force (the fluid's, in a coupled run) does work F . dx:
+//     on a free sphere exactly the kinetic energy it gains (1e-12), and
+//     pulling a sphere along a plane, friction dissipates the analytic share
+//     of that work (1 %) and wallWork + externalWork = dissipation + change
+//     of energy (1e-3);
 //   - turning energy flows on changes no trajectory (bit for bit).
 #include "TestCase.hpp"
 
@@ -190,6 +195,53 @@ TEST(EnergyFlows, headOnPair)
         EXPECT_NEAR(f.pairDissipation / lost, 1.0, 2e-3) << lawName(law);
         EXPECT_EQ(f.wallDissipation, 0.0) << lawName(law);
         EXPECT_FALSE(decreased) << lawName(law) << ": the dissipation went down in a step";
+    }
+}
+
+TEST(EnergyFlows, externalForceWork)
+{
+    {
+        // A free sphere pushed by a constant force and torque: velocity
+        // Verlet gives it exactly the work F . dx + T . w dt as kinetic energy
+        SimulationConfig cfg = test::sphereConfig(ContactLaw::hertzMindlin, 0.5, 0.3, r, E, nu, rho);
+        cfg.timeStep = 1e-5;
+        System s(cfg);
+        Snapshot st;
+        st.particles = s.makeSpheres(0, {Vec3(0, 0, 0)}, {}, 0);
+        st.particles.velocity[0] = Vec3(0.1, -0.2, 0.05);
+        s.initialise(st);
+        s.engine().enableEnergyFlows(true);
+        s.engine().setExternalForces({Vec3(2 * m * g, 0.5 * m * g, -m * g)}, {Vec3()});
+        const Energies e0 = s.engine().energies();
+        s.advance(1000);
+        const EnergyFlows f = s.engine().energyFlows();
+        const double gained = s.engine().energies().kinetic() - e0.kinetic();
+        std::printf("externalForceWork free: work/gained - 1 = %.3e\n", f.externalWork / gained - 1);
+        EXPECT_NEAR(f.externalWork / gained, 1.0, 1e-12);
+    }
+    {
+        // Pulled along a plane with friction: slides, then its work is
+        // dissipated and stored as kinetic energy
+        const SimulationConfig cfg = onPlane(ContactLaw::linearSpringDashpot);
+        System s(cfg);
+        restingSphere(s, cfg, Vec3(), Vec3());
+        // Above 3.5 mu m g the contact slides (below it the sphere rolls)
+        s.engine().setExternalForces({Vec3(2 * m * g, 0, 0)}, {Vec3()});
+        const Energies e0 = s.engine().energies();
+        s.advance(25000);   // 0.05 s
+        const EnergyFlows f = s.engine().energyFlows();
+        const Energies e1 = s.engine().energies();
+        const double bal = (f.wallWork + f.externalWork - f.dissipation() - (e1.total() - e0.total()))
+                           / f.externalWork;
+        std::printf("externalForceWork pulled: dissipated/work = %.4f, imbalance %.2e\n",
+                    f.dissipation() / f.externalWork, bal);
+        // Sliding: the centre accelerates at (F - mu m g)/m, the contact
+        // point at (F - 3.5 mu m g)/m (friction spins it up), so friction
+        // dissipates mu (F/mg - 3.5 mu) / (F/mg (F/mg - mu)) of F's work
+        const double mu = 0.3, Fg = 2.0;
+        const double share = mu * (Fg - 3.5 * mu) / (Fg * (Fg - mu));
+        EXPECT_NEAR(f.wallDissipation / f.externalWork / share, 1.0, 0.01);
+        EXPECT_NEAR(bal, 0.0, 1e-3);
     }
 }
 
