@@ -108,17 +108,7 @@ for name, coupling, change, expect in tests:
         txt = open(p).read().replace("default Euler;", "default localEuler;")
         open(p, "w").write(txt)
     elif change == "refiningMesh":
-        hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", """
-dynamicFvMesh dynamicRefineFvMesh;
-dynamicRefineFvMeshCoeffs
-{
-    refineInterval 1; field alpha.water;
-    lowerRefineLevel 0.001; upperRefineLevel 0.999; unrefineLevel 10;
-    nBufferLayers 1; maxRefinement 1; maxCells 200000;
-    correctFluxes ((phi none) (nHatf none) (rhoPhi none) (alphaPhi0.water none) (ghf none));
-    dumpLevel false;
-}
-""")
+        vc.refine_at_surface(case)
     elif change == "velocityCorrection":
         p = os.path.join(case, "system/fvSolution")
         txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradients;")

@@ -35,23 +35,7 @@ results = []
 case = hc.workdir("vofWaterVolumeRefined" if refine else "vofWaterVolume")
 vc.closed_tank(case, LO, HI, N)
 if refine:
-    # The fields of demInterFoam that are fluxes are named so that the mesh
-    # corrects none of them on the new faces (the solver rebuilds them)
-    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", """
-dynamicFvMesh dynamicRefineFvMesh;
-dynamicRefineFvMeshCoeffs
-{
-    refineInterval 1; field alpha.water;
-    lowerRefineLevel 0.001; upperRefineLevel 0.999; unrefineLevel 10;
-    nBufferLayers 1; maxRefinement 1; maxCells 2000000;
-    correctFluxes
-    (
-        (phi none) (nHatf none) (rhoPhi none) (alphaPhi0.water none) (ghf none)
-        (alphaPhiUn none) (epsf none) (phiInterstitial none) (phiInterstitial_0 none)
-    );
-    dumpLevel true;
-}
-""")
+    vc.refine_at_surface(case)
 vc.water_field(case, LO, HI, N, LEVEL)
 vc.vof_dicts(case, 0.25, 5e-4, 0.25)
 hc.dem_properties(case, 2.5e-5, 2500, 2e-3,

@@ -347,6 +347,28 @@ def submerged_from_water(centre, q, size, water, area):
     return level, submerged_box_volume(centre, q, size, level)
 
 
+def refine_at_surface(case):
+    """constant/dynamicMeshDict: dynamicRefineFvMesh refining one level at
+    the free surface (alpha.water between 0.001 and 0.999, one buffer
+    layer), unrefining elsewhere; demInterFoam's fluxes listed without
+    correction (the solver rebuilds them: docs/models.md, refining meshes)."""
+    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", """
+dynamicFvMesh dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{
+    refineInterval 1; field alpha.water;
+    lowerRefineLevel 0.001; upperRefineLevel 0.999; unrefineLevel 10;
+    nBufferLayers 1; maxRefinement 1; maxCells 2000000;
+    correctFluxes
+    (
+        (phi none) (nHatf none) (rhoPhi none) (alphaPhi0.water none) (ghf none)
+        (alphaPhiUn none) (epsf none) (phiInterstitial none) (phiInterstitial_0 none)
+    );
+    dumpLevel false;
+}
+""")
+
+
 def drum_mesh(case, R, N, M, C, DZ):
     """blockMeshDict of a 2D drum of radius R about the z axis: an O-grid
     of five blocks (an inner square of half side C, N x N cells, and four
