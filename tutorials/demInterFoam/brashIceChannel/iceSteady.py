@@ -182,6 +182,9 @@ def main():
     i0 = mser5(Rtot) if t0 is None else next(i for i, tt in enumerate(tr) if tt >= t0)
     t0 = tr[i0]
     ow = means.get("Rtotal", (0, 0))[0] - means.get("RiceNet", (0, 0))[0]
+    # MSER-5 within the window: does the load still truncate a transient?
+    i1 = i0 + mser5(Rtot[i0:])
+    mserIn = (tr[i1],) + batch_mean(Rice, i1) + batch_mean([v - ow for v in Rtot], i1)
     means = {}
     for k, x in (("Rice", Rice), ("Rfluid", Rfl), ("Rtotal", Rtot),
                  ("RiceNet", [v - ow for v in Rtot])):
@@ -234,6 +237,8 @@ def main():
         if "Rice" in means:
             o.write(f"# steady means (window from {t0:.3f} s: {'MSER-5 of Rtotal' if '-window' not in sys.argv else '-window'};"
                     f" 10 batch means; open water {ow:.4g} N from the function object's openWaterFile)\n")
+            o.write(f"# MSER-5 of Rtotal within the window: from {mserIn[0]:.3f} s, Rice"
+                    f" {mserIn[1]:.4g} +- {mserIn[2]:.3g} N, RiceNet {mserIn[4]:.4g} +- {mserIn[5]:.3g} N\n")
             for k in ("Rice", "Rfluid", "Rtotal", "RiceNet"):
                 o.write(f"#M {k} {means[k][0]:.4g} +- {means[k][1]:.3g} N ({means[k][2]} samples"
                         f" from {means[k][3]:.3f} s, batch lag-1 correlation {means[k][4]:.2f})\n")
