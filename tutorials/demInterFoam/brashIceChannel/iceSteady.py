@@ -235,7 +235,7 @@ def main():
                 f" (mean {sum(r['n'] for r in win) / max(1, len(win)):.1f});"
                 f" ice load trend over 10 batch means {bR:+.2f} +- {bR_e:.2f} N/s\n")
         if "Rice" in means:
-            o.write(f"# steady means (window from {t0:.3f} s: {'MSER-5 of Rtotal' if '-window' not in sys.argv else '-window'};"
+            o.write(f"# means over the window (from {t0:.3f} s: {'MSER-5 of Rtotal' if '-window' not in sys.argv else '-window'};"
                     f" 10 batch means; open water {ow:.4g} N from the function object's openWaterFile)\n")
             o.write(f"# MSER-5 of Rtotal within the window: from {mserIn[0]:.3f} s, Rice"
                     f" {mserIn[1]:.4g} +- {mserIn[2]:.3g} N, RiceNet {mserIn[4]:.4g} +- {mserIn[5]:.3g} N\n")
@@ -263,7 +263,8 @@ def main():
     h1, l1 = ax[0].get_legend_handles_labels()
     h2, l2 = ax0b.get_legend_handles_labels()
     ax[0].legend(h1 + h2, l1 + l2, fontsize=7, loc="lower right")
-    ax[0].set_title(f"{case}: built porosity {I['porosity']:.2f}, U = {U:g} m/s")
+    name = os.path.join(*os.path.normpath(os.path.abspath(case)).split(os.sep)[-2:])
+    ax[0].set_title(f"{name}: built porosity {I['porosity']:.2f}, U = {U:g} m/s")
     for k, (a, b) in enumerate(bands):
         ax[1].plot(t, [r[f"u{k}"] for r in rows], "o-", ms=3, label=f"x in [{a:.1f}, {b:.1f}] m")
     ax[1].plot(t, [r["ugap"] for r in rows], "k--", ms=3, label="beside the hull (gaps)")
@@ -278,7 +279,7 @@ def main():
         m, e = means["Rice"][0], means["Rice"][1]
         ax[2].axvspan(t0, tend, color="C0", alpha=0.08)
         ax[2].plot([t0, tend], [m, m], color="C0", lw=2,
-                   label=f"steady mean {m:.2f} $\\pm$ {e:.2f} N from {t0:.2f} s")
+                   label=f"mean over the window {m:.2f} $\\pm$ {e:.2f} N from {t0:.2f} s (steady only if the trends say so)")
     ax[2].set_ylim(min(0, min(run)) - 5, max(run) * 2 + 5)
     ax[2].set_ylabel("ice load along the flow [N]")
     ax[2].set_xlabel("time [s]")
