@@ -4,7 +4,8 @@ the seed report's dummy hull held fixed in a brash-ice channel, water and
 ice flowing past it at the towing speed (hull-fixed frame).
 
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
-                   [-demStep DT] [-endTime T] [-hullDraft T] [-dir DIR]
+                   [-demStep DT] [-endTime T] [-hullDraft T] [-porosity P]
+                   [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -26,6 +27,11 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
               The keel is at z_w - T, so the water under the hull is
               z_w - T - z_min deep (default 0.35 m; -test 0.15 m); it must
               be at least one base cell, and 0 < T <= 0.5 m
+  -porosity P the ice layer's porosity in plan, 1 - the ice concentration
+              (default 0.35): the built channel's, and the inflow's
+              solidFraction is 1 - P. The inflow's random placement jams
+              near 0.5 coverage, so P < 0.5 makes it deliver less than the
+              channel built at t = 0 (README, "Steady state"); 0 < P < 1
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -93,6 +99,7 @@ def write(path, obj, body, cls="dictionary"):
 def main():
     size, d, openWater, U, kv, dtDem, end = "default", "case", False, 0.74, None, None, None
     draft = 0.25                 # the dummy hull's default draft (hull.py)
+    porosity = 0.35              # the ice layer's plan porosity (the builder's default)
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
@@ -111,6 +118,14 @@ def main():
             d = args.pop(0)
         elif a == "-endTime":
             end = float(args.pop(0))
+        elif a == "-porosity":
+            v = args.pop(0) if args else ""
+            try:
+                porosity = float(v)
+            except ValueError:
+                sys.exit(f"makeCase.py: -porosity '{v}': expected a porosity in (0, 1)")
+            if not (0 < porosity < 1):
+                sys.exit(f"makeCase.py: -porosity {porosity:g}: expected 0 < P < 1")
         elif a == "-hullDraft":
             v = args.pop(0) if args else ""
             try:
@@ -120,7 +135,7 @@ def main():
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -dir DIR)")
+                     "-hullDraft T, -porosity P, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -139,7 +154,7 @@ def main():
                  f"{zw - dmin[2]:g} m deep); expected T <= {zw - dmin[2] - P['cell']:g} m")
     info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
                             cellSize=P["cell"], iceThickness=ICE_THICKNESS,
-                            velocity=(U, 0.0, 0.0), snap=False,
+                            velocity=(U, 0.0, 0.0), snap=False, porosity=porosity,
                             bowPoints=32, hullLevels=2,
                             hullDict=f"type dummy; depth {HULL_DEPTH:g}; draft {draft:g};")
     ice = info["ice"]
@@ -458,7 +473,8 @@ output
     print(f"makeCase.py {size}{' openWater' if openWater else ''}: U {U:g} m/s, "
           f"{0 if openWater else ice['blocks']} blocks (porosity {ice['porosity']:.3f}), "
           f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s, "
-          f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel)")
+          f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel), "
+          f"inflow solid fraction {1 - ice['porosity']:.4g}")
 
 
 main()
