@@ -37,7 +37,6 @@ sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import demState  # noqa: E402
 
 RHO_ICE = 920.0
-BEAM = 0.2                     # the dummy hull's beam (bow diameter)
 
 
 def info(case):
@@ -115,7 +114,11 @@ def main():
         else:
             case = a
     I = info(case)
+    if "hullBeam" not in I:
+        sys.exit(f"iceSteady.py: {case}/case.info has no hullBeam (a case made before"
+                 " makeCase.py wrote it): remake the case")
     U, W, t_ice = I["speed"], I["ymax"] - I["ymin"], I["iceThickness"]
+    BEAM = I["hullBeam"]
     x0, xs, xe = I["xmin"], I["stemX"], I["hullEnd"]
     area = lambda p: p["mass"] / (RHO_ICE * t_ice)          # noqa: E731
     # bands ahead of the bow (from the release line, a bounding radius

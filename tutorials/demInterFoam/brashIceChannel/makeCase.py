@@ -158,8 +158,8 @@ def main():
                             bowPoints=32, hullLevels=2,
                             hullDict=f"type dummy; depth {HULL_DEPTH:g}; draft {draft:g};")
     ice = info["ice"]
-    # The stem is at the waterline at stemX; the hull runs 1.2 m aft of it
-    hullEnd = P["stemX"] + 1.2
+    # The stem is at the waterline at stemX; the hull runs its length aft of it
+    hullEnd = P["stemX"] + info["hullLength"]
     kv = P["kv"] if kv is None else kv
     dt, dtDem = P["dt"], (P["dtDem"] if dtDem is None else dtDem)
     nDem = round(dt / dtDem)
@@ -464,7 +464,7 @@ output
         for k, v in dict(size=size, openWater=int(openWater), speed=U, stiffness=kv,
                          xmin=dmin[0], xmax=dmax[0], ymin=dmin[1], ymax=dmax[1],
                          zmin=dmin[2], zmax=dmax[2], waterLevel=zw, stemX=P["stemX"],
-                         hullEnd=hullEnd, hullDraft=draft, keelClearance=round(keelClearance, 9),
+                         hullEnd=hullEnd, hullBeam=info["hullBeam"], hullDraft=draft, keelClearance=round(keelClearance, 9),
                          cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
                          blocks=ice["blocks"], porosity=ice["porosity"],
                          iceThickness=ICE_THICKNESS, rhoWater=RHO_W,

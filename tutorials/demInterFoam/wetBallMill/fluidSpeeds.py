@@ -9,20 +9,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wetMill import case_info  # noqa: E402
-
-
-def internal(path, width):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<(?:scalar|vector)>\s*(\d+)\s*\(", txt)
-    if m is None:
-        return None
-    n = int(m.group(1))
-    body = txt[m.end():]
-    if width == 1:
-        return [float(v) for v in body.split(None, n)[:n]]
-    vals = re.findall(r"\(([^()]*)\)", body)[:n]
-    return [sum(float(c) ** 2 for c in v.split()) ** 0.5 for v in vals]
+from wetMill import case_info, internal_field  # noqa: E402
 
 
 def pct(v, q):
@@ -36,9 +23,10 @@ for d in sorted((d for d in os.listdir(".") if re.fullmatch(r"[0-9.]+", d) and f
                 key=float):
     if not (os.path.isfile(os.path.join(d, "U")) and os.path.isfile(os.path.join(d, "alpha.water"))):
         continue
-    sp, a = internal(os.path.join(d, "U"), 3), internal(os.path.join(d, "alpha.water"), 1)
-    if sp is None or a is None:
+    U, a = internal_field(os.path.join(d, "U"), 3), internal_field(os.path.join(d, "alpha.water"))
+    if not (isinstance(U, list) and isinstance(a, list)):
         continue
+    sp = [sum(c * c for c in u) ** 0.5 for u in U]
     w = [s for s, x in zip(sp, a) if x > 0.5]
     g = [s for s, x in zip(sp, a) if x <= 0.5]
     row = (float(d), sum(w) / len(w), pct(w, 0.95), max(w), sum(1 for s in w if s > 5),

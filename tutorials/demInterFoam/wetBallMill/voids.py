@@ -12,24 +12,14 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from wetMill import case_info  # noqa: E402
+from wetMill import case_info, internal_field  # noqa: E402
 
 EPS_BED = 0.75
 
 
-def internal(path):
-    txt = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*(\d+)\s*\(", txt)
-    if m is None:
-        m = re.search(r"internalField\s+uniform\s+([-+0-9.eE]+)", txt)
-        return float(m.group(1))
-    n = int(m.group(1))
-    return [float(v) for v in txt[m.end():].split(None, n)[:n]]
-
-
 info = case_info(".")
 t0 = float(info["steadyStart"])
-V = internal(os.path.join(info["tCouple"], "V"))
+V = internal_field(os.path.join(info["tCouple"], "V"))
 rows = []
 for d in sorted(os.listdir("."), key=lambda s: float(s) if re.fullmatch(r"[0-9.]+", s) else -1):
     if not re.fullmatch(r"[0-9.]+", d) or float(d) < t0 - 1e-9:
@@ -37,7 +27,7 @@ for d in sorted(os.listdir("."), key=lambda s: float(s) if re.fullmatch(r"[0-9.]
     pa, pe = os.path.join(d, "alpha.water"), os.path.join(d, "voidfraction")
     if not (os.path.isfile(pa) and os.path.isfile(pe)):
         continue
-    a, e = internal(pa), internal(pe)
+    a, e = internal_field(pa), internal_field(pe)
     if not isinstance(e, list):
         e = [e] * len(V)
     W = sum(ei * ai * vi for ei, ai, vi in zip(e, a, V))

@@ -1,7 +1,8 @@
 """Readers of the wet ball mill's results (plot.py, tabulate.py,
-checkSlurry.py): the chargeShape monitor, the fluid's moment on the shell
-(forces function object), the slurry volume (demInterFoam's
-waterVolume.dat), the dry tutorial's reference table. Plain python3."""
+checkSlurry.py, voids.py, fluidSpeeds.py, poolAtRest.py): the chargeShape
+monitor, the fluid's moment on the shell (forces function object), the
+slurry volume (demInterFoam's waterVolume.dat), the dry tutorial's reference
+table, the cell values of a written field. Plain python3."""
 import glob
 import math
 import os
@@ -11,6 +12,25 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DRY_RESULTS = os.path.join(HERE, "..", "..", "demFoam", "ballMill", "reference", "results.md")
 CHARGE_COLS = ("time shoulder toe toeBelow shoulderHeight toeHeight M xc yc wallTorque "
                "gravityTorque power powerGravity wallSteps dissipation wallWorkRate externalWorkRate energy").split()
+
+
+def internal_field(path, width=1):
+    """The internalField of an ASCII OpenFOAM field file: a list of floats
+    (width 1) or of tuples of width floats (vectors); a uniform field gives
+    its value (a float or a tuple); None when neither is found."""
+    txt = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(?:scalar|vector)>\s*(\d+)\s*\(", txt)
+    if m is None:
+        u = re.search(r"internalField\s+uniform\s+(\([^()]*\)|[-+0-9.eE]+)", txt)
+        if u is None:
+            return None
+        v = [float(x) for x in u.group(1).strip("()").split()]
+        return v[0] if width == 1 else tuple(v)
+    n = int(m.group(1))
+    body = txt[m.end():]
+    if width == 1:
+        return [float(v) for v in body.split(None, n)[:n]]
+    return [tuple(float(c) for c in v.split()) for v in re.findall(r"\(([^()]*)\)", body)[:n]]
 
 
 def case_info(case):

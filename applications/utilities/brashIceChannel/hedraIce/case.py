@@ -103,4 +103,5 @@ def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1,
                 fs[k] = float(v)
     h = _hull.hull_from_dict(Dict.read(os.path.join(case, "system", "iceHullDict")).sub("hull"))
     return dict(case=case, domainMin=dmin, domainMax=dmax, waterLevel=zw, cellSize=cell,
-                stemX=stemX, hullVolume=h.volume(), ice=summary, fsicr=fs)
+                stemX=stemX, hullVolume=h.volume(), hullBeam=h.B, hullLength=h.L,
+                ice=summary, fsicr=fs)
