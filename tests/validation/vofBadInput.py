@@ -21,11 +21,14 @@ no crash, no hang):
      (exclude)                                values (excluded fill transported)
  11. resolved mode, minFluidFraction 1e-5 -> couplingProperties, the range
                                               [0.001, 0.1]
- 12. resolved mode, refinement { band .. } -> couplingProperties: available
-     (used to be ignored)                     in demIbFoam, not here
- 13. resolved mode on dynamicRefineFvMesh  -> dynamicMeshDict: not available,
-     (used to stop in a floating-point        the alternatives
-     exception in the first solve)
+ 12. resolved mode, refinement { band .. } -> couplingProperties: it needs
+     on a static mesh                         dynamicRefineFvMesh (field
+                                              ibRefinement) in dynamicMeshDict
+ 13. resolved mode on dynamicRefineFvMesh  -> dynamicMeshDict: field
+     refining on alpha.water                  ibRefinement expected (a
+                                              refinement that follows another
+                                              field would merge cells a body
+                                              cuts)
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -88,10 +91,11 @@ tests = [
      None, ["minFluidFraction 1e-05", "couplingProperties", "[0.001, 0.1]"]),
     ("resolvedRefinementEntry",
      "couplingMode resolved;\ndemBackend polyDEM;\nrefinement { band 5e-3; }\n",
-     None, ["Entry 'refinement'", "couplingProperties", "demIbFoam"]),
+     None, ["Entry 'refinement'", "couplingProperties", "dynamicRefineFvMesh",
+            "ibRefinement"]),
     ("resolvedRefiningMesh",
      "couplingMode resolved;\ndemBackend polyDEM;\n", "refiningMesh",
-     ["dynamicRefineFvMesh", "dynamicMeshDict", "couplingMode unresolved"]),
+     ["field alpha.water", "dynamicMeshDict", "expected field ibRefinement"]),
 ]
 
 results = []

@@ -82,44 +82,12 @@ ATOL = 1e-6
 # plunge's impact: -2.1e-5 and -1.2e-15)
 LIMITER_ITER = 20
 
-COUPLING = """couplingMode resolved;
-demBackend polyDEM;
-internalFluid integrated;
-directForcing
-{
-    interface penalised;
-    nSubSamples 8;
-}
-"""
-
-
 def make(name, rho_b, zb0, end, write, open_top=True):
-    case = hc.workdir(name)
-    vc.closed_tank(case, LO, HI, N, open_top=open_top)
-    # Water outside the cube exactly (vofcase.water_field); the cells the
-    # cube fills are set from the level by the solver (fillSolidCells)
-    box = ((XC[0] - H / 2, XC[1] - H / 2, zb0), (XC[0] + H / 2, XC[1] + H / 2, zb0 + H))
-    vc.water_field(case, LO, HI, N, LEVEL, [box])
-    vc.vof_dicts(case, end, DT, write, limiterIter=LIMITER_ITER)
-    vc.dem_blocks(case, 1e-4, rho_b, [(XC[0], XC[1], zb0 + H / 2)], (H, H, H), (LO, HI))
-    hc.coupling(case, COUPLING)
-    hc.run("blockMesh", case, "log.blockMesh")
-    hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
-    return case
+    return vc.resolved_cube(name, rho_b, XC, zb0, H, LO, HI, N, LEVEL, end, DT, write,
+                            open_top=open_top, limiter_iter=LIMITER_ITER)
 
 
-def read_forces(case):
-    """(t, z, Uz, centre, quaternion (w x y z)) of
-    postProcessing/ibForces/<t0>/forces.dat"""
-    base = os.path.join(case, "postProcessing/ibForces")
-    rows = []
-    for t in sorted(os.listdir(base), key=float):
-        for line in open(os.path.join(base, t, "forces.dat")):
-            if line.startswith("#") or not line.strip():
-                continue
-            v = [float(x) for x in line.split()]
-            rows.append((v[0], v[4], v[7], tuple(v[2:5]), tuple(v[20:24])))
-    return rows
+read_forces = vc.read_ib_forces
 
 
 def draft(rho_b):

@@ -369,6 +369,79 @@ dynamicRefineFvMeshCoeffs
 """)
 
 
+RESOLVED_CUBE_COUPLING = """couplingMode resolved;
+demBackend polyDEM;
+internalFluid integrated;
+directForcing
+{
+    interface penalised;
+    nSubSamples 8;
+}
+"""
+
+
+def refine_around_bodies(case, max_level=1, free_surface=False):
+    """constant/dynamicMeshDict for demInterFoam's resolved mode:
+    dynamicRefineFvMesh on the field ibRefinement (ibRefinementIndicator:
+    the cells near the bodies, and with free_surface the interface cells),
+    max_level levels, unrefining where the bodies have left."""
+    hc.foamfile(os.path.join(case, "constant/dynamicMeshDict"), "dynamicMeshDict", f"""
+dynamicFvMesh dynamicRefineFvMesh;
+dynamicRefineFvMeshCoeffs
+{{
+    refineInterval 1; field ibRefinement;
+    lowerRefineLevel 0.5; upperRefineLevel 1.5; unrefineLevel 0.5;
+    nBufferLayers 1; maxRefinement {max_level}; maxCells 2000000;
+    correctFluxes
+    (
+        (phi none) (nHatf none) (rhoPhi none) (alphaPhi0.water none) (ghf none)
+        (alphaPhiUn none) (epsf none) (phiWater none)
+        (phiInterstitial none) (phiInterstitial_0 none)
+    );
+    dumpLevel false;
+}}
+""")
+
+
+def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
+                  open_top=True, limiter_iter=20, refinement=None):
+    """A cube of edge H (density rho_b, bottom at zb0, centre xy) in a tank
+    of water to 'level', demInterFoam couplingMode resolved; refinement:
+    None (the uniform mesh n) or the couplingProperties refinement entries
+    (e.g. "band 5e-3;"), with refine_around_bodies' dynamicMeshDict. Runs
+    blockMesh and demInterFoam; returns the case folder."""
+    case = hc.workdir(name)
+    closed_tank(case, lo, hi, n, open_top=open_top)
+    # Water outside the cube exactly (water_field); the cells the cube
+    # fills are set from the level by the solver (fillSolidCells)
+    box = ((xy[0] - H / 2, xy[1] - H / 2, zb0), (xy[0] + H / 2, xy[1] + H / 2, zb0 + H))
+    water_field(case, lo, hi, n, level, [box])
+    vof_dicts(case, end, dt, write, limiterIter=limiter_iter)
+    dem_blocks(case, 1e-4, rho_b, [(xy[0], xy[1], zb0 + H / 2)], (H, H, H), (lo, hi))
+    coupling = RESOLVED_CUBE_COUPLING
+    if refinement is not None:
+        refine_around_bodies(case)
+        coupling += "refinement\n{\n    " + refinement + "\n}\n"
+    hc.coupling(case, coupling)
+    hc.run("blockMesh", case, "log.blockMesh")
+    hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
+    return case
+
+
+def read_ib_forces(case):
+    """(t, z, Uz, centre, quaternion (w x y z)) per step of
+    postProcessing/ibForces/<t0>/forces.dat"""
+    base = os.path.join(case, "postProcessing/ibForces")
+    rows = []
+    for t in sorted(os.listdir(base), key=float):
+        for line in open(os.path.join(base, t, "forces.dat")):
+            if line.startswith("#") or not line.strip():
+                continue
+            v = [float(x) for x in line.split()]
+            rows.append((v[0], v[4], v[7], tuple(v[2:5]), tuple(v[20:24])))
+    return rows
+
+
 def drum_mesh(case, R, N, M, C, DZ):
     """blockMeshDict of a 2D drum of radius R about the z axis: an O-grid
     of five blocks (an inner square of half side C, N x N cells, and four

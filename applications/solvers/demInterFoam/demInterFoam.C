@@ -87,6 +87,11 @@ Description
     the bodies (alphaBody) in theirs, with the old density of its own mass
     balance. Then the DEM is sub-cycled and the new mask built.
     Lubrication is not available in this mode (it needs a constant nu).
+    On a refining mesh (dynamicRefineFvMesh on the field ibRefinement of
+    ibRefinementIndicator: around the bodies, and with refinement
+    { freeSurface yes; } along the free surface) the mask is rebuilt on the
+    new cells and the old fluid fraction takes the re-sampling of the
+    bodies (resolvedTopoChange.H).
 
 \*---------------------------------------------------------------------------*/
 
@@ -111,6 +116,7 @@ Description
 #include "demCloud.H"
 #include "directForcingIB.H"
 #include "ibParticles.H"
+#include "ibRefinementIndicator.H"
 #include "demBackend.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -196,6 +202,13 @@ int main(int argc, char *argv[])
         {
             if (pimple.firstIter() || moveMeshOuterCorrectors)
             {
+                if (ibRefinement && pimple.firstIter())
+                {
+                    // Where the bodies are at the start of the step (and
+                    // the free surface)
+                    ibRefinement->update(ibBodies->bodies(), &alpha1);
+                }
+
                 mesh.update();
 
                 if (mesh.changing())
@@ -208,14 +221,7 @@ int main(int argc, char *argv[])
 
                         if (resolvedMode)
                         {
-                            // Any other mesh that changes its cells (the
-                            // refining one is refused at the start)
-                            FatalErrorInFunction
-                                << "The mesh changed its cells (constant/"
-                                << "dynamicMeshDict) with couplingMode"
-                                << " resolved: the immersed bodies on a"
-                                << " changing mesh are not available in"
-                                << " demInterFoam" << exit(FatalError);
+                            #include "resolvedTopoChange.H"
                         }
 
                         // Refinement: the mesh maps only registered fields.

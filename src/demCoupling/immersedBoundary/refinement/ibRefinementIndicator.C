@@ -1,13 +1,23 @@
 #include "ibRefinementIndicator.H"
+#include "labelIOList.H"
 
 Foam::ibRefinementIndicator::ibRefinementIndicator
 (
     const fvMesh& mesh,
-    const dictionary& ibDict
+    const dictionary& ibDict,
+    const bool freeSurfaceAvailable
 )
 :
     mesh_(mesh),
     band_(ibDict.subOrEmptyDict("refinement").getOrDefault<scalar>("band", -1)),
+    freeSurface_
+    (
+        ibDict.subOrEmptyDict("refinement").getOrDefault<bool>
+        (
+            "freeSurface",
+            false
+        )
+    ),
     indicator_
     (
         IOobject
@@ -29,10 +39,21 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
             << "band must be >= 0 [m] in " << ibDict.subDict("refinement").name()
             << ", not " << band_ << exit(FatalIOError);
     }
+    if (freeSurface_ && !freeSurfaceAvailable)
+    {
+        FatalIOErrorInFunction(ibDict.subDict("refinement"))
+            << "freeSurface yes in " << ibDict.subDict("refinement").name()
+            << ": this solver has no free surface (demInterFoam has)"
+            << exit(FatalIOError);
+    }
 }
 
 
-void Foam::ibRefinementIndicator::update(const UList<ibBody>& bodies)
+void Foam::ibRefinementIndicator::update
+(
+    const UList<ibBody>& bodies,
+    const volScalarField* alpha
+)
 {
     scalar band = band_;
     if (band < 0)
@@ -44,6 +65,11 @@ void Foam::ibRefinementIndicator::update(const UList<ibBody>& bodies)
         }
     }
 
+    // The refinement level of each cell (hexRef8's cellLevel, registered by
+    // dynamicRefineFvMesh; none on a static mesh)
+    const labelIOList* levelPtr =
+        mesh_.findObject<labelIOList>("cellLevel");
+
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
     scalarField& f = indicator_.primitiveFieldRef();
@@ -52,13 +78,49 @@ void Foam::ibRefinementIndicator::update(const UList<ibBody>& bodies)
     {
         // Half the diagonal of a cube of the cell's volume (hexahedra)
         const scalar h = 0.5*sqrt(3.0)*cbrt(V[celli]);
+        // A cell made by a refinement is kept (0.5: neither refined nor
+        // merged with lowerRefineLevel = unrefineLevel = 0.5) as long as its
+        // parent could be selected again. dynamicRefineFvMesh refines a
+        // cell when one of its corners has a mean of the surrounding cells
+        // above 0.5, so a parent one corner away from a marked cell Q is
+        // refined: its centre lies within h_P + h_Q of the corner's, and
+        // Q's within its reach r_b + band + h_Q, so its children lie within
+        // r_b + band + 2 h_Q + h_P + h_c of the body: 7 h_c at level 1 (Q
+        // no coarser than the parent), 11 h_c deeper (Q up to twice the
+        // parent's size). Without the keep the cells at the band's edge
+        // were refined and merged in turn every step (112 of 11 000 cells
+        // of a floating cube's mesh)
+        const label level = levelPtr ? (*levelPtr)[celli] : 0;
+        const scalar keepReach = (level == 0 ? 0 : (level == 1 ? 7 : 11))*h;
         for (const ibBody& b : bodies)
         {
+            const scalar d2 = magSqr(C[celli] - b.position);
             const scalar reach = b.radius + band + h;
-            if (magSqr(C[celli] - b.position) < reach*reach)
+            if (d2 < reach*reach)
             {
                 f[celli] = 1;
                 break;
+            }
+            const scalar keep = b.radius + band + keepReach;
+            if (level > 0 && d2 < keep*keep)
+            {
+                f[celli] = 0.5;
+            }
+        }
+    }
+    if (freeSurface_)
+    {
+        if (!alpha)
+        {
+            FatalErrorInFunction
+                << "freeSurface: no phase fraction given" << abort(FatalError);
+        }
+        const scalarField& a = alpha->primitiveField();
+        forAll(f, celli)
+        {
+            if (a[celli] > 0.001 && a[celli] < 0.999)
+            {
+                f[celli] = 1;
             }
         }
     }
