@@ -54,22 +54,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.environ.get("HEDRA_DIR", os.path.normpath(os.path.join(HERE, "..", "..", "..")))
 sys.path.insert(0, os.path.join(ROOT, "applications", "utilities", "brashIceChannel"))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import foamFile  # noqa: E402
 from hedraIce.case import makeBrashIceCase  # noqa: E402
 from twoPhaseDictionaries import FV_SCHEMES, write_laminar_gravity  # noqa: E402
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  Hedra tutorial: brashIceChannel (demInterFoam), written by makeCase.py
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-"""
+BANNER = "Hedra tutorial: brashIceChannel (demInterFoam), written by makeCase.py"
 
 RHO_W, NU_W = 1010.0, 1.0e-6       # the report's water
 RHO_A, NU_A = 1.2, 1.48e-5          # and air
@@ -90,10 +79,7 @@ SIZES = {
 
 
 def write(path, obj, body, cls="dictionary"):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(cls=cls, obj=obj) + body +
-                "\n// ************************************************************************* //\n")
+    foamFile.write(path, obj, body, BANNER, cls)
 
 
 def main():

@@ -14,6 +14,7 @@ pyramid of cubes (3-2-1, edge a) standing on the floor at xStack.
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import foamFile  # noqa: E402
 from twoPhaseDictionaries import write_two_phase_dictionaries  # noqa: E402
 
 mode = sys.argv[1] if len(sys.argv) > 1 else "default"
@@ -41,25 +42,11 @@ for r in range(3):
     for k in range(3 - r):
         cubes.append((xStack + a/2 + (k + 0.5*r)*(a + gap), W/2, a/2 + gap + r*(a + gap)))
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  Hedra tutorial demInterFoam/damBreakCubes ({mode}), written by makeCase.py
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-"""
+BANNER = f"Hedra tutorial demInterFoam/damBreakCubes ({mode}), written by makeCase.py"
 
 
 def write(path, obj, body, cls="dictionary"):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(mode=mode, cls=cls, obj=obj) + body)
+    foamFile.write(path, obj, body, BANNER, cls)
 
 
 def plane(name, pt, nv):

@@ -22,6 +22,7 @@ import math
 import os
 import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import foamFile  # noqa: E402
 from twoPhaseDictionaries import write_two_phase_dictionaries  # noqa: E402
 
 mode = sys.argv[1] if len(sys.argv) > 1 else "default"
@@ -53,25 +54,11 @@ tRelease, tCouple = P["tRelease"], P["tCouple"]
 tEnd = tCouple + P["flow"]
 slab = P["ny"] == 1
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  Hedra tutorial demInterFoam/damBreakRockPile ({mode}), written by makeCase.py
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-"""
+BANNER = f"Hedra tutorial demInterFoam/damBreakRockPile ({mode}), written by makeCase.py"
 
 
 def write(path, obj, body, cls="dictionary"):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(mode=mode, cls=cls, obj=obj) + body)
+    foamFile.write(path, obj, body, BANNER, cls)
 
 
 # ---- DEM: shared by both cases --------------------------------------------

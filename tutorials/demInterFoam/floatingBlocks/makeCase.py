@@ -21,19 +21,10 @@ import math
 import os
 import sys
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  Hedra tutorial: floatingBlocks (demInterFoam), written by makeCase.py
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import foamFile  # noqa: E402
 
-"""
+BANNER = "Hedra tutorial: floatingBlocks (demInterFoam), written by makeCase.py"
 
 # Blocks: (name, size a b c [m] with a >= b >= c, density [kg/m3], centre x y
 # [m] as a fraction of the tank, yaw [deg], tilt about world x [deg])
@@ -58,10 +49,7 @@ RHO_W, RHO_A = 1000.0, 1.0
 
 
 def write(path, obj, body, cls="dictionary"):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(cls=cls, obj=obj) + body +
-                "\n// ************************************************************************* //\n")
+    foamFile.write(path, obj, body, BANNER, cls)
 
 
 def rot(yaw, tilt):

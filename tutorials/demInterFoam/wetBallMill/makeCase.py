@@ -34,6 +34,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import foamFile  # noqa: E402
 from rotatingDrum import PIMPLE_O_GRID, o_grid_block_mesh, dynamic_mesh_dict  # noqa: E402
 from twoPhaseDictionaries import FV_SCHEMES  # noqa: E402
 
@@ -77,24 +78,11 @@ NZ = max(1, int(round(L / args.cells))) if L > 2 * args.cells else 1
 SIDE = "empty" if NZ == 1 else "wall"
 ENDS = "ends" if args.mesh == "ogrid" else "(front|back)"
 
-HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  Hedra tutorial demInterFoam/wetBallMill, written by makeCase.py
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{{
-    version     2.0;
-    format      ascii;
-    class       {cls};
-    object      {obj};
-}}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-"""
+BANNER = "Hedra tutorial demInterFoam/wetBallMill, written by makeCase.py"
 
 
 def write(path, obj, body, cls="dictionary"):
-    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
-    with open(path, "w") as f:
-        f.write(HEADER.format(cls=cls, obj=obj) + body)
+    foamFile.write(path, obj, body, BANNER, cls)
 
 
 # ---- mesh and its motion --------------------------------------------------
