@@ -142,8 +142,7 @@ def check_floating(label, rho_b, case, results, table, archimedes=True):
     W0 = water[0][1]
     vsub = submerged(rows, water)
     n = len(vsub)
-    late = vsub[int(0.7 * n):]
-    V = sum(late) / len(late)
+    V = vc.late_mean(vsub)
     Varch = draft(rho_b) * H * H
     err = (V - Varch) / Varch
     ok = abs(err) <= 0.03

@@ -428,6 +428,12 @@ def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
     return case
 
 
+def late_mean(values, fraction=0.3):
+    """Mean of the last 'fraction' of a time series (a settled state)."""
+    late = values[int((1 - fraction) * len(values)):]
+    return sum(late) / max(len(late), 1)
+
+
 def read_ib_forces(case):
     """(t, z, Uz, centre, quaternion (w x y z)) per step of
     postProcessing/ibForces/<t0>/forces.dat"""

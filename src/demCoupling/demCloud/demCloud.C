@@ -489,8 +489,9 @@ void Foam::demCloud::evolve
     const scalar tMoving = io_.elapsedTime();
 
     // A moving mesh: the particles as they are (the previous step's) on the
-    // moved cells, for the rate at fixed points in space (voidfractionRate)
-    if (mesh_.moving())
+    // moved cells, for the rate at fixed points in space (voidfractionRate,
+    // when the solver asked for it)
+    if (mesh_.moving() && voidfractionRateRequested_)
     {
         if (!voidfractionBeforeStep_)
         {

@@ -82,16 +82,14 @@ void Foam::ibRefinementIndicator::update
         // merged with lowerRefineLevel = unrefineLevel = 0.5) as long as its
         // parent could be selected again. dynamicRefineFvMesh refines a
         // cell when one of its corners has a mean of the surrounding cells
-        // above 0.5, so a parent one corner away from a marked cell Q is
-        // refined: its centre lies within h_P + h_Q of the corner's, and
-        // Q's within its reach r_b + band + h_Q, so its children lie within
-        // r_b + band + 2 h_Q + h_P + h_c of the body: 7 h_c at level 1 (Q
-        // no coarser than the parent), 11 h_c deeper (Q up to twice the
-        // parent's size). Without the keep the cells at the band's edge
-        // were refined and merged in turn every step (112 of 11 000 cells
-        // of a floating cube's mesh)
+        // above 0.5, so a parent P is refined when a marked cell Q touches
+        // one of its corners: P's centre lies within h_P + h_Q of Q's, and
+        // Q (refined to the finest level, h_Q <= h_c) within its reach
+        // r_b + band + h_Q of the body, so P's children lie within
+        // r_b + band + 2 h_Q + h_P + h_c <= r_b + band + 5 h_c. Without the
+        // keep the cells at the band's edge were refined and merged in turn
+        // every step (112 of 11 000 cells of a floating cube's mesh)
         const label level = levelPtr ? (*levelPtr)[celli] : 0;
-        const scalar keepReach = (level == 0 ? 0 : (level == 1 ? 7 : 11))*h;
         for (const ibBody& b : bodies)
         {
             const scalar d2 = magSqr(C[celli] - b.position);
@@ -101,7 +99,7 @@ void Foam::ibRefinementIndicator::update
                 f[celli] = 1;
                 break;
             }
-            const scalar keep = b.radius + band + keepReach;
+            const scalar keep = b.radius + band + 5*h;
             if (level > 0 && d2 < keep*keep)
             {
                 f[celli] = 0.5;
