@@ -404,12 +404,13 @@ dynamicRefineFvMeshCoeffs
 
 
 def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
-                  open_top=True, limiter_iter=20, refinement=None):
+                  open_top=True, limiter_iter=20, refinement=None, ranks=1):
     """A cube of edge H (density rho_b, bottom at zb0, centre xy) in a tank
     of water to 'level', demInterFoam couplingMode resolved; refinement:
     None (the uniform mesh n) or the couplingProperties refinement entries
     (e.g. "band 5e-3;"), with refine_around_bodies' dynamicMeshDict. Runs
-    blockMesh and demInterFoam; returns the case folder."""
+    blockMesh and demInterFoam (ranks > 1: split in x by decomposePar, run
+    with mpirun); returns the case folder."""
     case = hc.workdir(name)
     closed_tank(case, lo, hi, n, open_top=open_top)
     # Water outside the cube exactly (water_field); the cells the cube
@@ -424,7 +425,16 @@ def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
         coupling += "refinement\n{\n    " + refinement + "\n}\n"
     hc.coupling(case, coupling)
     hc.run("blockMesh", case, "log.blockMesh")
-    hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
+    if ranks > 1:
+        hc.foamfile(os.path.join(case, "system/decomposeParDict"), "decomposeParDict", f"""
+numberOfSubdomains {ranks};
+method simple;
+simpleCoeffs {{ n ({ranks} 1 1); delta 0.001; }}
+""")
+        hc.run("decomposePar", case, "log.decomposePar")
+        hc.run(f"mpirun -np {ranks} demInterFoam -parallel", case, "log.demInterFoam", timeout=1800)
+    else:
+        hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
     return case
 
 
