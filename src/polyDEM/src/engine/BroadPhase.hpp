@@ -1,4 +1,5 @@
-// polyDEM engine: broad phase (hashed uniform grid sorted by cell) and neighbour lists.
+// polyDEM engine: broad phase (uniform grid, particles sorted by a locality-preserving
+// cell key) and neighbour lists.
 // Part of ThrustEngine.inl: compiled once per back end inside
 // namespace polydem::PD_BACKEND_NS (defined by the including back end).
 #pragma once
