@@ -1,4 +1,5 @@
-// polyDEM engine: broad phase (hashed uniform grid sorted by cell) and neighbour lists.
+// polyDEM engine: broad phase (uniform grid, particles sorted by a locality-preserving
+// cell key) and neighbour lists.
 // Part of ThrustEngine.inl: compiled once per back end inside
 // namespace polydem::PD_BACKEND_NS (defined by the including back end).
 #pragma once
@@ -10,10 +11,22 @@ namespace polydem
 namespace PD_BACKEND_NS
 {
 
+//- Uniform grid of cubic cells (cell = largest diameter + skin). A cell's key
+//  is its linear index in the bounding box of the particles' reference
+//  positions, x fastest (dx + nx (dy + ny dz), the indices taken from the
+//  cell of the box's lower corner), modulo the power-of-two table: cells near
+//  in space get keys near in the sorted order, so after the sort a particle's
+//  partners lie near it in memory (cells along x are consecutive; the 27-cell
+//  walk reads 9 runs of up to 3 consecutive cells). When the box holds more
+//  cells than the table, or for a cell outside the box (a neighbour of a
+//  boundary cell), the index wraps: different cells then share a key (a
+//  collision), which the neighbour search filters.
 struct Grid
 {
     double cellSize;
     unsigned tableMask;
+    int64_t ox = 0, oy = 0, oz = 0;   //!< cell of the box's lower corner
+    uint64_t nx = 1, ny = 1;          //!< cells of the box along x, y
 
     PD_HD void cellOf(const Vec3& x, int64_t& ix, int64_t& iy, int64_t& iz) const
     {
@@ -22,10 +35,14 @@ struct Grid
         iz = int64_t(floor(x.z / cellSize));
     }
 
-    PD_HD unsigned hash(int64_t ix, int64_t iy, int64_t iz) const
+    PD_HD unsigned key(int64_t ix, int64_t iy, int64_t iz) const
     {
-        const uint64_t h = uint64_t(ix) * 73856093ULL ^ uint64_t(iy) * 19349663ULL ^ uint64_t(iz) * 83492791ULL;
-        return unsigned(h) & tableMask;
+        // Unsigned arithmetic: wraps (defined) outside the box and for
+        // unbounded domains alike
+        const uint64_t dx = uint64_t(ix) - uint64_t(ox);
+        const uint64_t dy = uint64_t(iy) - uint64_t(oy);
+        const uint64_t dz = uint64_t(iz) - uint64_t(oz);
+        return unsigned(dx + nx * (dy + ny * dz)) & tableMask;
     }
 };
 
@@ -38,7 +55,30 @@ struct CellKey
     {
         int64_t ix, iy, iz;
         grid.cellOf(ref[i], ix, iy, iz);
-        return grid.hash(ix, iy, iz);
+        return grid.key(ix, iy, iz);
+    }
+};
+
+//- Bounding box of the reference positions of the particles listed (reduction)
+struct Box
+{
+    Vec3 lo, hi;
+};
+
+struct BoxOf
+{
+    const Vec3* ref;
+    PD_HD Box operator()(int i) const { return Box{ref[i], ref[i]}; }
+};
+
+struct MergeBoxes
+{
+    PD_HD static double lower(double a, double b) { return a < b ? a : b; }
+    PD_HD static double upper(double a, double b) { return a < b ? b : a; }
+    PD_HD Box operator()(const Box& a, const Box& b) const
+    {
+        return Box{Vec3(lower(a.lo.x, b.lo.x), lower(a.lo.y, b.lo.y), lower(a.lo.z, b.lo.z)),
+                   Vec3(upper(a.hi.x, b.hi.x), upper(a.hi.y, b.hi.y), upper(a.hi.z, b.hi.z))};
     }
 };
 
@@ -121,7 +161,7 @@ struct BuildNeighbours
         for (int dx = -1; dx <= 1; ++dx)
         {
             const int64_t ix = cx + dx, iy = cy + dy, iz = cz + dz;
-            const unsigned h = grid.hash(ix, iy, iz);
+            const unsigned h = grid.key(ix, iy, iz);
             const int first = cellStart[h];
             if (first < 0) continue;
             const int end = cellEnd[h];

@@ -843,12 +843,27 @@ private:
         }
 
         // Sort by cell (stable: ties keep their order, so a restart that starts
-        // from a sorted state keeps it)
+        // from a sorted state keeps it). Cells are keyed relative to the cell
+        // of the kept particles' lower corner (min and max are exact, so the
+        // box, and with it the order, does not depend on the thread count, and
+        // a restart, which starts from the stored reference positions of the
+        // same particles, finds the same box)
         Grid grid;
         grid.cellSize = 2 * rMax_ + skin();
         unsigned table = 1024;
         while (table < 2u * unsigned(std::max(n, 1))) table <<= 1;
         grid.tableMask = table - 1;
+        if (n > 0)
+        {
+            const Vec3 r0 = ref_[int(perm[0])];
+            const Box box = thrust::transform_reduce(thrust::device, perm.begin(), perm.end(),
+                                                     BoxOf{ptr(ref_)}, Box{r0, r0}, MergeBoxes{});
+            int64_t hx, hy, hz;
+            grid.cellOf(box.lo, grid.ox, grid.oy, grid.oz);
+            grid.cellOf(box.hi, hx, hy, hz);
+            grid.nx = uint64_t(hx) - uint64_t(grid.ox) + 1;
+            grid.ny = uint64_t(hy) - uint64_t(grid.oy) + 1;
+        }
         dvec<unsigned> keys(n);
         thrust::transform(thrust::device, perm.begin(), perm.end(), keys.begin(), CellKey{grid, ptr(ref_)});
         thrust::stable_sort_by_key(thrust::device, keys.begin(), keys.end(), perm.begin());
