@@ -82,6 +82,16 @@ def write(path, obj, body, cls="dictionary"):
     foamFile.write(path, obj, body, BANNER, cls)
 
 
+def number(option, args, expected):
+    """The number after option (taken from args), or exit naming what was
+    expected"""
+    v = args.pop(0) if args else ""
+    try:
+        return float(v)
+    except ValueError:
+        sys.exit(f"makeCase.py: {option} '{v}': expected {expected}")
+
+
 def main():
     size, d, openWater, U, kv, dtDem, end = "default", "case", False, 0.74, None, None, None
     draft = 0.25                 # the dummy hull's default draft (hull.py)
@@ -105,19 +115,11 @@ def main():
         elif a == "-endTime":
             end = float(args.pop(0))
         elif a == "-porosity":
-            v = args.pop(0) if args else ""
-            try:
-                porosity = float(v)
-            except ValueError:
-                sys.exit(f"makeCase.py: -porosity '{v}': expected a porosity in (0, 1)")
+            porosity = number(a, args, "a porosity in (0, 1)")
             if not (0 < porosity < 1):
                 sys.exit(f"makeCase.py: -porosity {porosity:g}: expected 0 < P < 1")
         elif a == "-hullDraft":
-            v = args.pop(0) if args else ""
-            try:
-                draft = float(v)
-            except ValueError:
-                sys.exit(f"makeCase.py: -hullDraft '{v}': expected a draft in m")
+            draft = number(a, args, "a draft in m")
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "

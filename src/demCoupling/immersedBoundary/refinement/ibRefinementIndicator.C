@@ -18,6 +18,7 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
             false
         )
     ),
+    refineInterval_(0),
     indicator_
     (
         IOobject
@@ -39,6 +40,44 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
             << "band must be >= 0 [m] in " << ibDict.subDict("refinement").name()
             << ", not " << band_ << exit(FatalIOError);
     }
+    const IOdictionary meshDict
+    (
+        IOobject
+        (
+            "dynamicMeshDict",
+            mesh.time().constant(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if
+    (
+        meshDict.getOrDefault<word>("dynamicFvMesh", "staticFvMesh")
+     == "dynamicRefineFvMesh"
+    )
+    {
+        const dictionary& coeffs =
+            meshDict.optionalSubDict("dynamicRefineFvMeshCoeffs");
+        const word field(coeffs.get<word>("field"));
+        if (field != indicator_.name())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "dynamicRefineFvMeshCoeffs field " << field << " in "
+                << meshDict.objectPath() << " with resolved bodies"
+                << " (refinement around them): expected field "
+                << indicator_.name() << ", which marks the cells around the"
+                << " bodies (and the free surface with refinement"
+                << " { freeSurface yes; } in demInterFoam)" << nl
+                << "    A refinement that follows another field would not"
+                << " wrap the bodies in fine cells and would merge cells a"
+                << " body cuts, where the water is not kept"
+                << exit(FatalIOError);
+        }
+        refineInterval_ = coeffs.get<label>("refineInterval");
+    }
+
     if (freeSurface_ && !freeSurfaceAvailable)
     {
         FatalIOErrorInFunction(ibDict.subDict("refinement"))
@@ -55,6 +94,16 @@ void Foam::ibRefinementIndicator::update
     const volScalarField* alpha
 )
 {
+    // dynamicRefineFvMesh reads the field only in the steps it refines
+    if
+    (
+        refineInterval_ <= 0
+     || mesh_.time().timeIndex() % refineInterval_ != 0
+    )
+    {
+        return;
+    }
+
     scalar band = band_;
     if (band < 0)
     {
