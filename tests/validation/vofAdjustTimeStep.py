@@ -19,6 +19,12 @@ step. Checked:
      time equals step x timeStep and the fluid time of that step (1e-9 s);
   4. every write time of the adjustable write control was hit to within
      half a DEM step (time folders 0.05 0.1 0.15 0.2).
+  5. a step of a few DEM steps grows again: the same tank started at
+     deltaT = 1 DEM step, to t = 0.01 s, must reach 10 DEM steps (the
+     Courant limit, maxCo 0.2 on 5 mm cells, allows 4 m/s at that step;
+     the fluid is nearly at rest). Rounding the damped growth (x 1.2) down
+     to whole DEM steps kept any step of 4 or fewer DEM steps (the write-
+     time balancing leaves such steps) there for the rest of the run.
 """
 import os
 import re
@@ -81,4 +87,24 @@ ok = len(times) == len(want) and miss <= 0.5 * DT_DEM
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: write times {times} against {want}: worst miss {miss:.3g} s"
       f" (tolerance half a DEM step, {0.5 * DT_DEM:g} s)")
+
+# 5. growth from one DEM step
+case2 = hc.workdir("vofAdjustTimeStepGrowth")
+vc.closed_tank(case2, LO, HI, N)
+vc.water_field(case2, LO, HI, N, LEVEL)
+vc.vof_dicts(case2, 0.01, DT_DEM, 0.01, maxCo=0.2, adjust=True)
+hc.dem_properties(case2, DT_DEM, 2500, 2e-3,
+                  vc.box_walls(LO, HI),
+                  hc.random_fill("drop", 20, (0.004, 0.004, 0.04), (0.026, 0.026, 0.055)), E=2e6)
+hc.coupling(case2, vc.SPHERES_COUPLING)
+hc.run("blockMesh", case2, "log.blockMesh")
+hc.run("demInterFoam", case2, "log.demInterFoam", timeout=600)
+log2 = open(os.path.join(case2, "log.demInterFoam")).read()
+steps2 = [round(float(x) / DT_DEM) for x in re.findall(r"^deltaT = ([0-9.eE+-]+)", log2, re.M)]
+cos = [float(x) for x in re.findall(r"^Courant Number mean: \S+ max: (\S+)", log2, re.M)]
+ok = bool(steps2) and max(steps2) >= 10
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: from deltaT = 1 DEM step the step grew to {max(steps2) if steps2 else 0}"
+      f" DEM steps in {len(steps2)} fluid steps (at least 10 wanted; largest Courant number"
+      f" {max(cos) if cos else float('nan'):.3g} against maxCo 0.2)")
 hc.finish(results)
