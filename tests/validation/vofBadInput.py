@@ -29,6 +29,9 @@ no crash, no hang):
                                               refinement that follows another
                                               field would merge cells a body
                                               cuts)
+ 14. resolved mode, directForcing          -> couplingProperties/directForcing:
+     { closedSurface true; }                  implemented for the constant-
+                                              density solver (demIbFoam) only
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -93,6 +96,10 @@ tests = [
      "couplingMode resolved;\ndemBackend polyDEM;\nrefinement { band 5e-3; }\n",
      None, ["Entry 'refinement'", "couplingProperties", "dynamicRefineFvMesh",
             "ibRefinement"]),
+    ("resolvedClosedSurface",
+     "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { closedSurface true; }\n",
+     None, ["closedSurface true", "couplingProperties", "directForcing",
+            "constant-density solver (demIbFoam) only"]),
     ("resolvedRefiningMesh",
      "couplingMode resolved;\ndemBackend polyDEM;\n", "refiningMesh",
      ["field alpha.water", "dynamicMeshDict", "expected field ibRefinement"]),

@@ -13,7 +13,8 @@ Foam::directForcingIB::directForcingIB
     const volVectorField& U,
     const volScalarField& p,
     const dictionary& dict,
-    const scalar nu
+    const scalar nu,
+    const bool variableDensity
 )
 :
     mesh_(U.mesh()),
@@ -26,7 +27,16 @@ Foam::directForcingIB::directForcingIB
         dict.getOrDefault<scalar>("integralThreshold", 0.5)
     ),
     interface_(dict.getOrDefault<word>("interface", "penalised")),
-    closed_(dict.getOrDefault<bool>("closedSurface", false)),
+    // Closed by default where it is implemented (8.): the constant-density
+    // path with the kept (integral) forcing
+    closed_
+    (
+        dict.getOrDefault<bool>
+        (
+            "closedSurface",
+            integral_ && !variableDensity
+        )
+    ),
     nu_(nu),
     minCrossing_(dict.getOrDefault<scalar>("minCrossing", 1e-3)),
     beta_
@@ -159,6 +169,13 @@ Foam::directForcingIB::directForcingIB
         FatalIOErrorInFunction(dict)
             << "closedSurface true needs integralForcing true (the full"
             << " cells carry the kept forcing)" << exit(FatalIOError);
+    }
+    if (closed_ && variableDensity)
+    {
+        FatalIOErrorInFunction(dict)
+            << "closedSurface true is implemented for the constant-density"
+            << " solver (demIbFoam) only; set it false (the default here) for"
+            << " the variable-density fluid" << exit(FatalIOError);
     }
     mesh_.setFluxRequired(phiIB_.name());
     updateCellBoxes();
@@ -510,10 +527,10 @@ void Foam::directForcingIB::correctVelocity
 {
     if (closed_)
     {
+        // (refused at construction for the variable-density fluid)
         FatalErrorInFunction
-            << "directForcing closedSurface true is implemented for the"
-            << " constant-density solver (demIbFoam) only; set it false for"
-            << " the variable-density fluid" << exit(FatalError);
+            << "closedSurface is not implemented for the variable-density"
+            << " fluid" << exit(FatalError);
     }
     const scalarField& r = rho.primitiveField();
     const scalarField& m = mu.primitiveField();

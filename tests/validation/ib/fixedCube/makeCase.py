@@ -12,7 +12,7 @@ move: the mesh is refined in the first L steps and then stays.
 
 Usage: makeCase.py [-n N] [-re Re] [-angle deg] [-offset s] [-levels L]
                    [-band b] [-interface penalised|explicit] [-nsub k]
-                   [-endTime T] [-co C] [-closed]
+                   [-endTime T] [-co C] [-closed | -open]
   -n       cells per edge near the cube (default 8)
   -angle   rotation about z (0: face-on, 45: edge-on; default 0)
   -offset  shift of the cube centre in x, y, z in fine cells (default: 0
@@ -36,9 +36,15 @@ ap.add_argument("-levels", type=int, default=None)
 ap.add_argument("-band", type=float, default=1.2)
 ap.add_argument("-interface", default="penalised")
 ap.add_argument("-nsub", type=int, default=4)
-ap.add_argument("-closed", action="store_true",
-                help="directForcing closedSurface true: the rigid-body flux on the "
-                     "faces of the forced cells (directForcingIB.H, 8.)")
+surface = ap.add_mutually_exclusive_group()
+surface.add_argument("-closed", action="store_true",
+                     help="directForcing closedSurface true: the rigid-body flux on "
+                          "the faces of the forced cells (directForcingIB.H, 8.; "
+                          "demIbFoam's default since 2026-12-04, written out)")
+surface.add_argument("-open", action="store_true",
+                     help="directForcing closedSurface false: the flux through the "
+                          "forced cells' faces from the pressure equation (the "
+                          "default before 2026-12-04)")
 ap.add_argument("-endTime", type=float, default=12.0)
 ap.add_argument("-co", type=float, default=0.75)
 ap.add_argument("-accel", type=float, default=None,
@@ -117,15 +123,16 @@ directForcing
     nCorrections       1;
     interface          %s;
     integralForcing    true;
-    integralThreshold  0.5;
-    closedSurface      %s;
+    integralThreshold  0.5;%s
 }
 refinement { band %.12g; }
 bodies
 (
     { %s position (%.12g %.12g %.12g);%s%s }
 );
-""" % (a.nsub, a.interface, "true" if a.closed else "false", a.band,
+""" % (a.nsub, a.interface,
+       "\n    closedSurface      true;" if a.closed else
+       "\n    closedSurface      false;" if a.open else "", a.band,
        "shape sphere; radius 0.5;" if a.sphere else "shape box; size (1 1 1);",
        pos, pos, pos, rot,
        "" if a.accel is None else " acceleration (%.12g 0 0);" % a.accel))
