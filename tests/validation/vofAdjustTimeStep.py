@@ -36,17 +36,26 @@ LEVEL = 0.03
 DT_DEM = 2.5e-5
 END, WRITE = 0.2, 0.05
 results = []
-case = hc.workdir("vofAdjustTimeStep")
-vc.closed_tank(case, LO, HI, N)
-vc.water_field(case, LO, HI, N, LEVEL)
-vc.vof_dicts(case, END, 5e-4, WRITE, maxCo=0.2, adjust=True)
-hc.dem_properties(case, DT_DEM, 2500, 2e-3,
-                  vc.box_walls(LO, HI),
-                  hc.random_fill("drop", 20, (0.004, 0.004, 0.04), (0.026, 0.026, 0.055)), E=2e6)
-hc.coupling(case, vc.SPHERES_COUPLING)
-hc.run("blockMesh", case, "log.blockMesh")
-hc.run("demInterFoam", case, "log.demInterFoam", timeout=900)
-log = open(os.path.join(case, "log.demInterFoam")).read()
+
+
+def run_tank(name, end, dt, write):
+    """The tank with its falling spheres, run to end from deltaT dt; the
+    solver's log"""
+    case = hc.workdir(name)
+    vc.closed_tank(case, LO, HI, N)
+    vc.water_field(case, LO, HI, N, LEVEL)
+    vc.vof_dicts(case, end, dt, write, maxCo=0.2, adjust=True)
+    hc.dem_properties(case, DT_DEM, 2500, 2e-3,
+                      vc.box_walls(LO, HI),
+                      hc.random_fill("drop", 20, (0.004, 0.004, 0.04), (0.026, 0.026, 0.055)),
+                      E=2e6)
+    hc.coupling(case, vc.SPHERES_COUPLING)
+    hc.run("blockMesh", case, "log.blockMesh")
+    hc.run("demInterFoam", case, "log.demInterFoam", timeout=900)
+    return case, open(os.path.join(case, "log.demInterFoam")).read()
+
+
+case, log = run_tank("vofAdjustTimeStep", END, 5e-4, WRITE)
 
 dts = [float(x) for x in re.findall(r"^deltaT = ([0-9.eE+-]+)", log, re.M)]
 worst = max(abs(d / DT_DEM - round(d / DT_DEM)) for d in dts) if dts else 1.0
@@ -89,17 +98,7 @@ print(f"{'PASS' if ok else 'FAIL'}: write times {times} against {want}: worst mi
       f" (tolerance half a DEM step, {0.5 * DT_DEM:g} s)")
 
 # 5. growth from one DEM step
-case2 = hc.workdir("vofAdjustTimeStepGrowth")
-vc.closed_tank(case2, LO, HI, N)
-vc.water_field(case2, LO, HI, N, LEVEL)
-vc.vof_dicts(case2, 0.01, DT_DEM, 0.01, maxCo=0.2, adjust=True)
-hc.dem_properties(case2, DT_DEM, 2500, 2e-3,
-                  vc.box_walls(LO, HI),
-                  hc.random_fill("drop", 20, (0.004, 0.004, 0.04), (0.026, 0.026, 0.055)), E=2e6)
-hc.coupling(case2, vc.SPHERES_COUPLING)
-hc.run("blockMesh", case2, "log.blockMesh")
-hc.run("demInterFoam", case2, "log.demInterFoam", timeout=600)
-log2 = open(os.path.join(case2, "log.demInterFoam")).read()
+_, log2 = run_tank("vofAdjustTimeStepGrowth", 0.01, DT_DEM, 0.01)
 steps2 = [round(float(x) / DT_DEM) for x in re.findall(r"^deltaT = ([0-9.eE+-]+)", log2, re.M)]
 cos = [float(x) for x in re.findall(r"^Courant Number mean: \S+ max: (\S+)", log2, re.M)]
 ok = bool(steps2) and max(steps2) >= 10
