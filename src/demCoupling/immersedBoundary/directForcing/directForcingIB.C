@@ -996,6 +996,11 @@ void Foam::directForcingIB::setWallGhosts
     {
         return;
     }
+    // The old time level first: a field that has none yet (the first step
+    // after a restart) would take it from the first oldTime() call, after
+    // the ghosts below, and the restart would not continue the run bit for
+    // bit (ibRestartContinuation)
+    U.oldTime();
     vectorField& u = U.primitiveFieldRef();
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
