@@ -32,6 +32,9 @@ no crash, no hang):
  14. resolved mode, directForcing          -> couplingProperties/directForcing:
      { closedSurface true; }                  implemented for the constant-
                                               density solver (demIbFoam) only
+ 15. resolved mode, refining mesh,         -> couplingProperties/refinement:
+     refinement { surfaceBand 0.01; }         surfaceBand needs freeSurface yes
+     without freeSurface
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -100,6 +103,10 @@ tests = [
      "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { closedSurface true; }\n",
      None, ["closedSurface true", "couplingProperties", "directForcing",
             "constant-density solver (demIbFoam) only"]),
+    ("resolvedSurfaceBand",
+     "couplingMode resolved;\ndemBackend polyDEM;\nrefinement { band 5e-3; surfaceBand 0.01; }\n",
+     "refineAroundBodies", ["surfaceBand", "couplingProperties", "refinement",
+                            "needs freeSurface yes"]),
     ("resolvedRefiningMesh",
      "couplingMode resolved;\ndemBackend polyDEM;\n", "refiningMesh",
      ["field alpha.water", "dynamicMeshDict", "expected field ibRefinement"]),
@@ -120,6 +127,8 @@ for name, coupling, change, expect in tests:
         open(p, "w").write(txt)
     elif change == "refiningMesh":
         vc.refine_at_surface(case)
+    elif change == "refineAroundBodies":
+        vc.refine_around_bodies(case)
     elif change == "velocityCorrection":
         p = os.path.join(case, "system/fvSolution")
         txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradients;")

@@ -14,8 +14,11 @@ twice as wide, so that the refined region is a part of it), 0.5 s
               band = 5 mm of the cube's bounding sphere, merged where it
               has left; the cube starts on the base mesh and is wrapped in
               the first step;
-  body and    the same, and along the whole free surface.
+  body and    the same, and along the whole free surface;
   surface
+  body and    the same, the free surface only within surfaceBand = 10 mm
+  surface     of the cube's bounding sphere (the waves the heave sends
+  near it     over the rest of the tank stay on the base mesh).
 Checked, for each refined run against the uniform one (both have the same
 cells at the body; what differs is the far field and the mesh changes):
 1. the submerged volume (from the cube's position and orientation and the
@@ -31,14 +34,16 @@ cells at the body; what differs is the far field and the mesh changes):
    [0, 1] to 1e-6;
 4. the body-only mesh holds at most 35 % of the uniform mesh's cells, the
    body-and-surface mesh at least the 20 x 20 interface cells split more
-   and at most 60 %; the body-only mesh changes in at most 20 % of the
+   and at most 60 %, the mesh with the surface near the body fewer than
+   the whole surface's and more than the body's alone; the body-only
+   mesh and the one with the surface near it change in at most 20 % of the
    steps (the heaving cube moves little: without the kept band of
    ibRefinementIndicator the band's edge changed in every step).
 5. The body-only case serial against two ranks (the cube on the split
    plane), 0.05 s: centre within 1e-4 of the displacement, water within
    1e-10.
 Prints the wall times and their ratios (bench/vofResolvedRefinement).
-About 5 min on one core.
+About 6 min on one core.
 """
 import math
 import os
@@ -59,6 +64,7 @@ DT = 1e-3
 END = 0.5 if "-full" not in sys.argv else 1.0
 RHO_B = 500.0
 BAND = 5e-3
+SBAND = 1e-2
 WTOL = 1e-8
 ATOL = 1e-6
 
@@ -143,14 +149,19 @@ def compare(label, su, sr, results):
 results = []
 uni, tUni = run("vofResolvedUniform", NU, None, END)
 fs, tFs = run("vofResolvedRefinedSurface", NB, f"band {BAND}; freeSurface yes;", END)
+near, tNear = run("vofResolvedRefinedSurfaceBand", NB,
+                  f"band {BAND}; freeSurface yes; surfaceBand {SBAND};", END)
 ref, tRef = run("vofResolvedRefined", NB, f"band {BAND};", END)
-su, sf, sr = submerged(uni), submerged(fs), submerged(ref)
+su, sf, sn, sr = submerged(uni), submerged(fs), submerged(near), submerged(ref)
 compare("refined (body and free surface)", su, sf, results)
+compare("refined (body and the surface near it)", su, sn, results)
 compare("refined (body only)", su, sr, results)
 water_checks("uniform", uni, results)
 water_checks("refined (body and free surface)", fs, results)
+water_checks("refined (body and the surface near it)", near, results)
 water_checks("refined (body only)", ref, results)
 cu, cf, cr = cells(uni, NU)[0], max(cells(fs, NB)), max(cells(ref, NB))
+cn = max(cells(near, NB))
 ok = cr <= 0.35 * cu
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: refined (body only) mesh at most {cr} cells against {cu}"
@@ -161,6 +172,10 @@ results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: freeSurface yes: at most {cf} cells against {cr} for the body"
       f" alone (at least {extra} more: the 20 x 20 interface cells split) and {cu} uniform"
       f" ({100*cf/cu:.1f} %, tolerance 60 %)")
+ok = cr < cn < cf
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: surfaceBand {SBAND}: at most {cn} cells, between the body"
+      f" alone ({cr}) and the whole surface ({cf})")
 # 5. Serial against two ranks (split in x through the cube), 0.05 s
 END_PAR = 0.05
 s1, _ = run("vofResolvedRefinedSerial", NB, f"band {BAND};", END_PAR)
@@ -181,21 +196,30 @@ for ok, msg in [
     results.append(ok)
     print(f"{'PASS' if ok else 'FAIL'}: {msg}")
 
-steps = [len(cells(c, NB)) for c in (fs, ref)]
+steps = [len(cells(c, NB)) for c in (fs, ref, near)]
 nSteps = int(round(END / DT))
-print(f"INFO: mesh changes in {steps[0]} (body and surface) of {nSteps} steps")
+print(f"INFO: mesh changes in {steps[0]} (body and surface), {steps[2]} (body and the surface"
+      f" near it) of {nSteps} steps")
 ok = steps[1] <= 0.2 * nSteps
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: refined (body only): {steps[1]} mesh changes in {nSteps}"
       f" steps (at most 20 %: the kept band of ibRefinementIndicator; without it the cells at"
       f" the band's edge were split and merged in every step)")
+ok = steps[2] <= 0.2 * nSteps
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: refined (body and the surface near it): {steps[2]} mesh"
+      f" changes in {nSteps} steps (at most 20 %, as the body alone: the surface within"
+      f" surfaceBand moves with the cube's heave, the waves beyond it are not followed)")
 
 with open(os.path.join(ref, "postProcessing/submerged.dat"), "w") as f:
-    f.write("# t submergedVolume [m3]: uniform, refined (body and free surface), refined (body only)\n")
-    for a, b, e in zip(su, sf, sr):
-        f.write(f"{a[0]} {a[1]} {b[1]} {e[1]}\n")
+    f.write("# t submergedVolume [m3]: uniform, refined (body and free surface),"
+            " refined (body only), refined (body and the surface near it)\n")
+    for a, b, e, g in zip(su, sf, sr, sn):
+        f.write(f"{a[0]} {a[1]} {b[1]} {e[1]} {g[1]}\n")
 print(f"\nwall time: uniform {tUni:.1f} s ({cu} cells), refined at the body and the surface"
-      f" {tFs:.1f} s (at most {cf} cells), at the body only {tRef:.1f} s (at most {cr} cells)")
+      f" {tFs:.1f} s (at most {cf} cells), at the body and the surface near it {tNear:.1f} s"
+      f" (at most {cn} cells), at the body only {tRef:.1f} s (at most {cr} cells)")
 print(f"ratio uniform/refined (body and surface) wall time: {tUni/tFs:.3f}")
+print(f"ratio uniform/refined (body and the surface near it) wall time: {tUni/tNear:.3f}")
 print(f"ratio uniform/refined (body only) wall time: {tUni/tRef:.3f}")
 hc.finish(results)

@@ -18,6 +18,14 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
             false
         )
     ),
+    surfaceBand_
+    (
+        ibDict.subOrEmptyDict("refinement").getOrDefault<scalar>
+        (
+            "surfaceBand",
+            -1
+        )
+    ),
     refineInterval_(0),
     indicator_
     (
@@ -78,6 +86,23 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
         refineInterval_ = coeffs.get<label>("refineInterval");
     }
 
+    if (ibDict.subOrEmptyDict("refinement").found("surfaceBand"))
+    {
+        const dictionary& rd = ibDict.subDict("refinement");
+        if (!freeSurface_)
+        {
+            FatalIOErrorInFunction(rd)
+                << "surfaceBand in " << rd.name() << " limits the refined"
+                << " free surface to the bodies' neighbourhood: it needs"
+                << " freeSurface yes" << exit(FatalIOError);
+        }
+        if (surfaceBand_ < 0)
+        {
+            FatalIOErrorInFunction(rd)
+                << "surfaceBand must be >= 0 [m] in " << rd.name()
+                << ", not " << surfaceBand_ << exit(FatalIOError);
+        }
+    }
     if (freeSurface_ && !freeSurfaceAvailable)
     {
         FatalIOErrorInFunction(ibDict.subDict("refinement"))
@@ -85,6 +110,34 @@ Foam::ibRefinementIndicator::ibRefinementIndicator
             << ": this solver has no free surface (demInterFoam has)"
             << exit(FatalIOError);
     }
+}
+
+
+Foam::scalar Foam::ibRefinementIndicator::mark
+(
+    const UList<ibBody>& bodies,
+    const scalar band,
+    const point& c,
+    const scalar h,
+    const label level
+)
+{
+    scalar value = 0;
+    for (const ibBody& b : bodies)
+    {
+        const scalar d2 = magSqr(c - b.position);
+        const scalar reach = b.radius + band + h;
+        if (d2 < reach*reach)
+        {
+            return 1;
+        }
+        const scalar keep = b.radius + band + 5*h;
+        if (level > 0 && d2 < keep*keep)
+        {
+            value = 0.5;
+        }
+    }
+    return value;
 }
 
 
@@ -139,21 +192,7 @@ void Foam::ibRefinementIndicator::update
         // keep the cells at the band's edge were refined and merged in turn
         // every step (112 of 11 000 cells of a floating cube's mesh)
         const label level = levelPtr ? (*levelPtr)[celli] : 0;
-        for (const ibBody& b : bodies)
-        {
-            const scalar d2 = magSqr(C[celli] - b.position);
-            const scalar reach = b.radius + band + h;
-            if (d2 < reach*reach)
-            {
-                f[celli] = 1;
-                break;
-            }
-            const scalar keep = b.radius + band + 5*h;
-            if (level > 0 && d2 < keep*keep)
-            {
-                f[celli] = 0.5;
-            }
-        }
+        f[celli] = mark(bodies, band, C[celli], h, level);
     }
     if (freeSurface_)
     {
@@ -165,10 +204,28 @@ void Foam::ibRefinementIndicator::update
         const scalarField& a = alpha->primitiveField();
         forAll(f, celli)
         {
-            if (a[celli] > 0.001 && a[celli] < 0.999)
+            if (!(a[celli] > 0.001 && a[celli] < 0.999) || f[celli] == 1)
+            {
+                continue;
+            }
+            if (surfaceBand_ < 0)
             {
                 f[celli] = 1;
+                continue;
             }
+            // Near a body only, with the kept cells at the edge as above
+            f[celli] = max
+            (
+                f[celli],
+                mark
+                (
+                    bodies,
+                    surfaceBand_,
+                    C[celli],
+                    0.5*sqrt(3.0)*cbrt(V[celli]),
+                    levelPtr ? (*levelPtr)[celli] : 0
+                )
+            );
         }
     }
     indicator_.correctBoundaryConditions();
