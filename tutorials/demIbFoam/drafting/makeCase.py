@@ -128,6 +128,8 @@ directForcing
     interface          penalised;   // explicit | penalised | none (directForcingIB.H)
     integralForcing    true;
     integralThreshold  0.5;
+    // closedSurface true is the default (the full cells take the rigid-body
+    // flux, directForcingIB.H 8.); false: the open surface of before 2026-12-04
 }
 %s""" % lubText)
 
