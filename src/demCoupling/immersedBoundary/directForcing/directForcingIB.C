@@ -525,13 +525,8 @@ void Foam::directForcingIB::correctVelocity
     const UList<ibBody>& bodies
 )
 {
-    if (closed_)
-    {
-        // (refused at construction for the variable-density fluid)
-        FatalErrorInFunction
-            << "closedSurface is not implemented for the variable-density"
-            << " fluid" << exit(FatalError);
-    }
+    // The variable-density path (7.) has no closed surface: construction
+    // with variableDensity true keeps closed_ false (and refuses it set)
     const scalarField& r = rho.primitiveField();
     const scalarField& m = mu.primitiveField();
     const scalar nu = nu_;
