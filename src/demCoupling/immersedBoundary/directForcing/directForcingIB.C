@@ -625,7 +625,21 @@ void Foam::directForcingIB::fillBodyCells
     const vector& g
 ) const
 {
-    fillCellsOfSolidFraction(f, g, SMALL);
+    // Only the fully forced cells: an interface cell's fluid part is at
+    // least half of it (its centre is outside the convex body), and the
+    // level continued into it from a sheet of water running along the
+    // floor would give the body's part water under air there (a heavy
+    // cell among light ones, accelerated by gh grad rho and held only by
+    // the penalisation: the rock pile's air blew up beside the rocks)
+    boolList known(mesh_.nCells(), true);
+    forAll(fullCell_, celli)
+    {
+        if (fullCell_[celli])
+        {
+            known[celli] = false;
+        }
+    }
+    fillCells(f, g, known);
 }
 
 
