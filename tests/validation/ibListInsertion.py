@@ -237,13 +237,14 @@ report(all(n == 8 for n in count.values()) and worst < TOL,
 fn = os.path.join(case, "postProcessing/ibForces/0/forces.dat")
 lines = open(fn).read().splitlines()
 header = lines[0].lstrip("#").split()
-report(len(header) == 24 and header[17:] == ["omegax", "omegay", "omegaz", "qw", "qx", "qy", "qz"]
-       and header[:17] == "time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz FLx FLy FLz".split(),
+report(len(header) == 30 and header[17:24] == ["omegax", "omegay", "omegaz", "qw", "qx", "qy", "qz"]
+       and header[:17] == "time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz FLx FLy FLz".split()
+       and header[24:] == "FDx FDy FDz TDx TDy TDz".split(),
        f"forces.dat header: {len(header)} columns, ... {' '.join(header[14:])}")
 first = {}
 for line in lines[1:]:
     v = [float(t) for t in line.split()]
-    if len(v) != 24:
+    if len(v) != 30:
         report(False, f"forces.dat row with {len(v)} columns: {line[:60]}")
         continue
     first.setdefault(int(v[1]), v)

@@ -142,7 +142,6 @@ int main(int argc, char *argv[])
 
         const List<vector> F(ib.force());
         const List<vector> T(ib.torque());
-        particles.writeForces(F, T);
         if (F.size())
         {
             Info<< "IB: F[0] = " << F[0] << "  T[0] = " << T[0] << endl;

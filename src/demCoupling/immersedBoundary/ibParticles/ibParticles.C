@@ -203,7 +203,8 @@ Foam::ibParticles::ibParticles
         mkDir(dir);
         out_.reset(new OFstream(dir/"forces.dat"));
         *out_ << "# time id x y z Ux Uy Uz Fx Fy Fz Tx Ty Tz FLx FLy FLz"
-              << " omegax omegay omegaz qw qx qy qz" << nl;
+              << " omegax omegay omegaz qw qx qy qz"
+              << " FDx FDy FDz TDx TDy TDz" << nl;
     }
 }
 
@@ -254,6 +255,7 @@ void Foam::ibParticles::evolve
         previousVelocity_[i] = b.velocity;
     }
 
+    writeForces(F, T, force, torque);
     advance(force, torque);
 }
 
@@ -303,6 +305,7 @@ void Foam::ibParticles::evolve
         previousVelocity_[i] = b.velocity;
     }
 
+    writeForces(F, T, force, torque);
     advance(force, torque);
 }
 
@@ -416,7 +419,9 @@ void Foam::ibParticles::checkForcesFinite
 void Foam::ibParticles::writeForces
 (
     const List<vector>& F,
-    const List<vector>& T
+    const List<vector>& T,
+    const List<vector>& force,
+    const List<vector>& torque
 ) const
 {
     if (!out_)
@@ -440,7 +445,11 @@ void Foam::ibParticles::writeForces
         // Orientation: body-to-world rotation as a unit quaternion, w >= 0
         const polydem::Quaternion q =
             polyDEMConversions::quaternionOf(b.orientation);
-        os  << ' ' << q.w << ' ' << q.x << ' ' << q.y << ' ' << q.z << nl;
+        os  << ' ' << q.w << ' ' << q.x << ' ' << q.y << ' ' << q.z;
+        // What the DEM gets: the whole fluid force and torque on the body
+        os  << ' ' << force[i].x() << ' ' << force[i].y() << ' '
+            << force[i].z() << ' ' << torque[i].x() << ' ' << torque[i].y()
+            << ' ' << torque[i].z() << nl;
     }
     os.flush();
 }
