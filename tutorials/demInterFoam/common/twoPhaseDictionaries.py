@@ -28,7 +28,10 @@ def write_laminar_gravity(case, write):
           cls="uniformDimensionedVectorField")
 
 
-def write_two_phase_dictionaries(case, write):
+def write_two_phase_dictionaries(case, write, alpha_tolerance="1e-8", limiter_iter=20):
+    """alpha_tolerance (text): of the implicit (MULESCorr) predictor, whose
+    residual is what the water balance misses per step; limiter_iter: MULES
+    limiter iterations"""
     write(f"{case}/system/fvSchemes", "fvSchemes", FV_SCHEMES)
     write(f"{case}/system/fvSolution", "fvSolution", """solvers
 {
@@ -39,8 +42,8 @@ def write_two_phase_dictionaries(case, write):
         // up to 1e-4 where the front runs through the rocks (measured in
         // damBreakRockPile; 4e-8 with 20, also with 1e-12 solver tolerances
         // it was 7e-5 with 5: the limiter, not the tolerances)
-        MULESCorr yes; nLimiterIter 20;
-        solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8; relTol 0;
+        MULESCorr yes; nLimiterIter LIMITER_ITER;
+        solver smoothSolver; smoother symGaussSeidel; tolerance ALPHA_TOLERANCE; relTol 0;
     }
     "pcorr.*" { solver PCG; preconditioner DIC; tolerance 1e-9; relTol 0; }
     p_rgh { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0.01; }
@@ -61,7 +64,7 @@ PIMPLE
     // the first step (README, "Pressure at the start")
     hydrostaticInitialisation false;
 }
-""")
+""".replace("ALPHA_TOLERANCE", alpha_tolerance).replace("LIMITER_ITER", str(limiter_iter)))
     write(f"{case}/constant/transportProperties", "transportProperties", """phases (water air);
 water { transportModel Newtonian; nu 1e-06; rho 1000; }
 air { transportModel Newtonian; nu 1.48e-05; rho 1; }

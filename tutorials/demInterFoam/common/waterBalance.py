@@ -12,14 +12,23 @@ def _rows(path):
 
 
 def balance(case, dt, fluxes=("waterOut",)):
-    """(rows of (t, W, out, W + out), W0); out is the cumulative outflow
-    through the patches of the surfaceFieldValue function objects named in
-    `fluxes` (each the sum of alphaPhi0.water over its patch; inflow counts
-    negative)."""
+    """(rows of (t, W, out, W + out, minAlpha, maxAlpha), W0); out is the
+    cumulative outflow through the patches of the surfaceFieldValue
+    function objects named in `fluxes` (each the sum of alphaPhi0.water over
+    its patch, times the fixed step dt; inflow counts negative), or with dt
+    None the solver's own (waterVolume.dat's last column, whole boundary)."""
     W = []
     base = os.path.join(case, "postProcessing", "demInterFoam")
     for t0 in sorted(os.listdir(base), key=float):
         W += _rows(os.path.join(base, t0, "waterVolume.dat"))
+    if dt is None:
+        # The solver's own column 7: the water out through the boundary in
+        # each step, a volume (any time step: adjustTimeStep)
+        out, res = 0.0, []
+        for r in W:
+            out += r[6]
+            res.append((r[0], r[1], out, r[1] + out, r[2], r[3]))
+        return res, W[0][1]
     flux = {}
     for name in fluxes:
         base = os.path.join(case, "postProcessing", name)

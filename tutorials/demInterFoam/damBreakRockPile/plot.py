@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import demState as ds
 
 info = {k: v for k, v in (l.split() for l in open("case.info"))}
-f = {k: float(v) for k, v in info.items() if k != "mode"}
+f = {k: float(v) for k, v in info.items() if k not in ("mode", "coupling")}
 
 
 def cols(path):

@@ -20,7 +20,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import demState as ds
 
 info = {k: v for k, v in (l.split() for l in open("case.info"))}
-f = {k: float(v) for k, v in info.items() if k != "mode"}
+f = {k: float(v) for k, v in info.items() if k not in ("mode", "coupling")}
+resolved = info.get("coupling") == "resolved"
 nx, ny = int(f["nx"]), int(f["ny"])
 os.makedirs("postProcessing/contactNetwork", exist_ok=True)
 
@@ -44,10 +45,32 @@ with open("postProcessing/rockDisplacement.dat", "w") as o:
         o.write("%.4f %.6g %.6g %.6g %d\n" % r)
 
 # ---- fluid force ----------------------------------------------------------
-rows = ds.read_summary("coupled")
+# rows: (t, -, rocks removed, Fx, Fy, Fz) per fluid step
+if resolved:
+    # The whole fluid force on each rock as the DEM gets it (forces.dat's
+    # FD: the full stress on its surface, hydrostatics included, with the
+    # inside fluid's weight and momentum change), summed over the rocks per
+    # step; the rocks removed from the DEM's particle balance
+    byT = {}
+    for t0 in sorted(os.listdir("coupled/postProcessing/ibForces"), key=float):
+        for l in open(os.path.join("coupled/postProcessing/ibForces", t0, "forces.dat")):
+            if l.strip() and not l.startswith("#"):
+                v = [float(x) for x in l.split()]
+                F = byT.setdefault(v[0], [0.0, 0.0, 0.0])
+                for k in range(3):
+                    F[k] += v[24 + k]
+    removed = 0
+    for t0 in os.listdir("coupled/postProcessing/demFoam"):
+        for l in open(os.path.join("coupled/postProcessing/demFoam", t0, "particleBalance.dat")):
+            if l.strip() and not l.startswith("#"):
+                removed = max(removed, int(float(l.split()[4])))
+    rows = [[t, 0, removed] + F for t, F in sorted(byT.items())]
+    forceNote = "immersed boundary: the full stress on the rocks' surfaces"
+else:
+    rows = ds.read_summary("coupled")
+    forceNote = "drag + pressure, with the buoyancy of their submerged volume"
 with open("postProcessing/fluidForce.dat", "w") as o:
-    o.write("# t-tCouple [s]  Fx Fy Fz [N]: fluid force on all rocks (drag + pressure,"
-            " with the buoyancy of their submerged volume)\n")
+    o.write(f"# t-tCouple [s]  Fx Fy Fz [N]: fluid force on all rocks ({forceNote})\n")
     for r in rows:
         o.write("%.5f %.6g %.6g %.6g\n" % (r[0] - f["tCouple"], r[3], r[4], r[5]))
 
@@ -58,9 +81,21 @@ for t, d in T:
     if a is None:
         continue
     x = 0.0
-    for i in range(nx):
-        if any(a[j*nx + i] > 0.5 for j in range(ny)):
-            x = (i + 1)*f["dx"]
+    if resolved:
+        # The refining mesh numbers its cells anew: the floor cells from
+        # their centres and volumes (cubes; writeCellCentres and
+        # writeCellVolumes, run by Allrun)
+        cx, _ = ds.read_scalar_field(os.path.join("coupled", d, "Cx"))
+        cz, _ = ds.read_scalar_field(os.path.join("coupled", d, "Cz"))
+        vol, _ = ds.read_scalar_field(os.path.join("coupled", d, "V"))
+        for k, ak in enumerate(a):
+            h = vol[k]**(1.0/3.0)
+            if ak > 0.5 and abs(cz[k] - h/2) < 1e-3*h:
+                x = max(x, cx[k] + h/2)
+    else:
+        for i in range(nx):
+            if any(a[j*nx + i] > 0.5 for j in range(ny)):
+                x = (i + 1)*f["dx"]
     fr.append((t - f["tCouple"], x))
 with open("postProcessing/waterFront.dat", "w") as o:
     o.write("# t-tCouple [s]  front [m] (downstream face of the furthest floor cell with"
@@ -128,7 +163,8 @@ report(nOut == 0 and nEnd == int(f["n"]), f"rocks at the end {nEnd}, outside the
 #    (the splash over the pile reaches it) = the start, to the continuity
 #    error the pressure tolerances allow; alpha bounds
 import waterBalance as wb
-Wb, W0 = wb.balance("coupled", f["dtCfd"])
+# (the resolved case's time step varies: the solver's own outflow column)
+Wb, W0 = wb.balance("coupled", None if resolved else f["dtCfd"])
 drift = max(abs(r[3] - W0) for r in Wb)/W0
 report(drift <= 1e-5, f"water balance: max |W + out - W0|/W0 = {drift:.3g} (tolerance 1e-5); water left"
        f" through the top by the end {Wb[-1][2]:.4g} m3 = {100*Wb[-1][2]/W0:.2f} % of W0 = {W0:.5g} m3")
