@@ -113,6 +113,19 @@ ok = dz < ZTOL
 results.append(ok)
 print(f"{'PASS' if ok else 'FAIL'}: rest: largest vertical displacement of the cube {dz:.3g} m"
       f" (tolerance 1e-3 dx = {ZTOL:.3g} m; final {rows[-1][1] - rows[0][1]:+.3g} m)")
+# The whole fluid force handed to the DEM (forces.dat FDz, column 27) of a
+# cube at rest on water at rest carries its weight on every step
+FDz = []
+for fn in sorted(os.listdir(os.path.join(case, "postProcessing/ibForces"))):
+    for line in open(os.path.join(case, "postProcessing/ibForces", fn, "forces.dat")):
+        if line.strip() and not line.startswith("#"):
+            FDz.append(float(line.split()[26]))
+weight = RHO_REST * H**3 * G
+err = max(abs(f - weight) for f in FDz) / weight
+ok = len(FDz) > 0 and err < 1e-3
+results.append(ok)
+print(f"{'PASS' if ok else 'FAIL'}: rest: fluid force on the cube (forces.dat FDz) against its weight"
+      f" {weight:.6g} N: largest relative difference {err:.3g} over {len(FDz)} steps (tolerance 1e-3)")
 
 # 2., 3. Released off the draft
 END = 1.0

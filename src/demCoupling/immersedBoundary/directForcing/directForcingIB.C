@@ -615,7 +615,16 @@ void Foam::directForcingIB::fillSolidCells
     const vector& g
 ) const
 {
-    fillCellsOfSolidFraction(f, g, 1);
+    const scalarField& lam = lambda_.primitiveField();
+    boolList known(mesh_.nCells(), true);
+    forAll(lam, celli)
+    {
+        if (cellBody_[celli] >= 0 && lam[celli] >= 1)
+        {
+            known[celli] = false;
+        }
+    }
+    fillCells(f, g, known);
 }
 
 
@@ -631,49 +640,25 @@ void Foam::directForcingIB::fillBodyCells
     // floor would give the body's part water under air there (a heavy
     // cell among light ones, accelerated by gh grad rho and held only by
     // the penalisation: the rock pile's air blew up beside the rocks)
-    boolList known(mesh_.nCells(), true);
-    forAll(fullCell_, celli)
-    {
-        if (fullCell_[celli])
-        {
-            known[celli] = false;
-        }
-    }
+    boolList known(notFullCells());
     fillCells(f, g, known);
 }
 
 
-void Foam::directForcingIB::fillCellsOfSolidFraction
-(
-    volScalarField& f,
-    const vector& g,
-    const scalar minLambda
-) const
+Foam::boolList Foam::directForcingIB::notFullCells() const
 {
-    const scalarField& lam = lambda_.primitiveField();
-    // known: the value is set (the cells with less solid, then the filled)
-    boolList known(mesh_.nCells(), true);
-    forAll(lam, celli)
+    boolList notFull(mesh_.nCells(), true);
+    forAll(fullCell_, celli)
     {
-        if (cellBody_[celli] >= 0 && lam[celli] >= minLambda)
-        {
-            known[celli] = false;
-        }
+        notFull[celli] = !fullCell_[celli];
     }
-    fillCells(f, g, known);
+    return notFull;
 }
 
 
 void Foam::directForcingIB::fillSolidPressure(volScalarField& p) const
 {
-    boolList known(mesh_.nCells(), true);
-    forAll(fullCell_, celli)
-    {
-        if (fullCell_[celli])
-        {
-            known[celli] = false;
-        }
-    }
+    boolList known(notFullCells());
     // g = 0: every face counts from the first pass on
     fillCells(p, vector::zero, known);
 }
