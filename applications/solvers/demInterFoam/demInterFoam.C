@@ -46,7 +46,10 @@ Description
     fraction (couplingEvolve.H). Particles feel the drag laws of
     demPimpleFoam with rho and mu averaged over their own volume, and the
     pressure force with the buoyancy of their submerged volume
-    (freeSurfacePressure). All coupling calls: createCoupling.H,
+    (freeSurfacePressure). MULES' correction flux is dropped on the
+    boundary faces it would pass unlimited (backflow through an outlet
+    whose alpha1 follows the cell; dropUnlimitedBoundaryCorrection.H), so
+    alpha1 stays in [0, 1] there too. All coupling calls: createCoupling.H,
     couplingEvolve.H, couplingWrite.H. Without particles the operations
     are interFoam's.
 
@@ -99,6 +102,7 @@ Description
 #include "dynamicFvMesh.H"
 #include "dynamicRefineFvMesh.H"
 #include "CMULES.H"
+#include "dropUnlimitedBoundaryCorrection.H"
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
 #include "CrankNicolsonDdtScheme.H"

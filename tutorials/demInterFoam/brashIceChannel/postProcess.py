@@ -28,11 +28,14 @@ Checks (each a conservation law or a sign; the tolerances are the solvers'):
      outlet and atmosphere stays at its start value (MULES and the flux
      projection conserve it to the pressure solver's tolerance; 1e-5 of the
      water volume over the run)
-  2. 0 <= alpha <= 1 (demInterFoam's waterVolume.dat): with ice to 1e-4
-     (measured within 4e-7 at both sizes); the open-water run has no
-     particles, so it is interFoam's own MULES bound (demInterFoam is
-     interFoam to round-off there, validation.vofDamBreakInterFoam), measured
-     1 + 8.5e-5 (-test) and 1 + 1.2e-4 (default): checked to 1e-3
+  2. 0 <= alpha <= 1 (demInterFoam's waterVolume.dat): with ice to 1e-6
+     (measured 1 + 4.7e-8 at -test); the open-water run has no particles,
+     so it is interFoam's own bound (demInterFoam is interFoam to round-off
+     there, validation.vofDamBreakInterFoam): the pressure solver's
+     continuity residual (p_rgh to 1e-7) piles up in cells full of water
+     beside the snapped hull, 1 + 4.9e-5 over the -test run's 0.4 s
+     (2.3e-8 with p_rgh to 1e-11; 1 + 1.2e-4 measured at the default size
+     before the outlet fix of docs/models.md): checked to 1e-3
   3. particle balance: inserted - removed = present at every step (the
      engine checks it and stops otherwise; here read back from
      particleBalance.dat)
@@ -120,7 +123,7 @@ def main():
         for f in one_file(case, "postProcessing/demInterFoam/*/waterVolume.dat"):
             W += rows(f)
         lo, hi = min(r[2] for r in W), max(r[3] for r in W)
-        tol = 1e-3 if case == "openWater" else 1e-4
+        tol = 1e-3 if case == "openWater" else 1e-6
         report(lo >= -tol and hi <= 1 + tol,
                f"{case}: alpha in [{lo:.3g}, 1 + {hi - 1:.3g}] (tolerance {tol:g})")
     # 3. particle balance
