@@ -9,7 +9,8 @@
 #                       negativeActiveUntil|negativeGap|pairRestitution|
 #                       tinyTimeStep|negativeDeltaT|listOverlap|listBehindWall|
 #                       sliverShape|approachWithoutVelocity|
-#                       approachOutsideRegion|approachWithoutHeight
+#                       approachOutsideRegion|approachWithoutHeight|
+#                       approachMixedShapes
 . "$(dirname "$0")/common.sh"
 
 kind="$1"
@@ -127,6 +128,13 @@ approachOutsideRegion)
 approachWithoutHeight)
     setEntry $props insertion "{ feed { type inflow; particleType beads; region { type box; min (0 0 0); max (0.02 0.02 0.01); } solidFraction 0.1; velocity (0.1 0 0); approach { min (-0.01 -0.01 -0.01); max (0.03 0.03 0.02);  } } }"
     expectFile="constant/demProperties"; expectEntry="insertion/feed/approach/height" ;;
+approachMixedShapes)
+    # a floating layer places one kind: spheres or polyhedra, not both
+    setEntry $props contactModel "{ law overlapVolume; volumetricStiffness 1e9; }"
+    setEntry $props particleTypes/cube "{ shape polyhedron; material glass; geometry { type box; size (0.004 0.004 0.004); } }"
+    setEntry $props insertion "{ feed { type inflow; particleTypes (beads cube); region { type box; min (0 0 0); max (0.02 0.02 0.01); } solidFraction 0.1; velocity (0.1 0 0); approach { min (-0.01 -0.01 -0.01); max (0.03 0.03 0.02); height 0.005; } } }"
+    expectFile="constant/demProperties"; expectEntry="insertion/feed/approach"
+    expectAlso="all spheres or all polyhedra" ;;
 *)
     fail "unknown bad-input kind '$kind'" ;;
 esac

@@ -14,6 +14,15 @@ Case B: random convex plates (3 shapes per class), a table of sizes with
         centreline to 0.2 m at the edges (stacked blocks), porosity 0.6.
 Case C: as A with `packing lattice` (rows, headings within +-5 deg) at
         porosity 0.3, which random addition cannot reach.
+Case D: as A with `shape { type sphere; }` at porosity 0.8: each block as
+        the sphere of its volume. Checked: (1) no two spheres closer than
+        the sum of their radii (centre distances), all inside the channel in
+        plan; (2) porosity by volume as in 2 below; (3) each sphere's
+        submerged cap pi h^2 (3R - h)/3 (h = z_w - bottom) equal to
+        (rho_i/rho_w) of its volume to 1e-9 relative; (4) the diameters:
+        pi d^3/6 = D_k^2 t with D_k the class sizes of 5 below (F(D_k) =
+        (k + 1/2)/N to 1e-7); (5) the same spheres with a thickness profile
+        are refused naming the entry 'shape'.
 Checks and tolerances:
   1. no two blocks intersect: for every pair closer than the sum of their
      bounding radii, the LP  max s  s.t.  A1 x <= b1 - s, A2 x <= b2 - s  (the
@@ -291,9 +300,90 @@ def check_table(D, n, fails, tag):
         fails.append(f"{tag}: table counts fail the chi-square test (p {chi.pvalue:.2e})")
 
 
+CASE_D = CASE_A.replace("shape { type cuboid; aspectRatio 0.8; }", "shape { type sphere; }") \
+    .replace("porosity 0.5;", "porosity 0.8;")
+
+
+def run_spheres(fails, tag="D"):
+    case = tempfile.mkdtemp(prefix="brashIce" + tag, dir=os.environ.get("HEDRA_TEST_TMP"))
+    os.makedirs(os.path.join(case, "system"))
+    with open(os.path.join(case, "system", "brashIceChannelDict"), "w") as f:
+        f.write(CASE_D)
+    subprocess.run([TOOL, "-case", case], check=True)
+    with open(os.path.join(case, "constant", "brashIce", "particleTypes")) as f:
+        diam = {n: float(d) for n, d in
+                re.findall(r"\n(\w+)\n\{\s*shape\s+sphere;[^{}]*?diameter\s+(\S+);", f.read())}
+    with open(os.path.join(case, "constant", "brashIce", "insertion")) as f:
+        txt = f.read()
+    spheres = []
+    for name, body in re.findall(r"\n(\w+)\n\{(.*?)\n\}", txt, re.S):
+        if name == "FoamFile":
+            continue
+        d = diam[re.search(r"particleType\s+(\w+);", body).group(1)]
+        for pos in re.findall(r"\{ position \(([^)]*)\); \}", body):
+            spheres.append((np.array([float(x) for x in pos.split()]), 0.5 * d))
+    n = len(spheres)
+    print(f"[{tag}] {n} spheres read back from {case}, diameters {sorted(round(2 * r, 5) for r in set(r for _, r in spheres))}")
+    if n == 0 or len(diam) == 0:
+        fails.append(f"{tag}: no spheres written")
+        return
+    # 1. no overlap, inside the channel
+    P = np.array([p for p, _ in spheres])
+    R_ = np.array([r for _, r in spheres])
+    worst = -np.inf
+    for i in range(n):
+        dist = np.linalg.norm(P[i + 1:] - P[i], axis=1) - (R_[i + 1:] + R_[i])
+        if dist.size:
+            worst = max(worst, -dist.min())
+    inside = (np.all(P[:, 0] - R_ >= -1e-9) and np.all(P[:, 0] + R_ <= 3 + 1e-9)
+              and np.all(P[:, 1] - R_ >= -1 - 1e-9) and np.all(P[:, 1] + R_ <= 1 + 1e-9))
+    print(f"[{tag}] deepest sphere overlap {worst:.3e} m (must be <= 0); inside: {inside}")
+    if worst > 0:
+        fails.append(f"{tag}: spheres overlap by {worst:.3e} m")
+    if not inside:
+        fails.append(f"{tag}: a sphere reaches outside the channel")
+    # 2. porosity by volume
+    V = 4 / 3 * np.pi * R_ ** 3
+    Vl = 3 * 2 * 0.1
+    por = 1 - V.sum() / Vl
+    tol = V.max() / Vl
+    print(f"[{tag}] porosity {por:.5f} target 0.8 tolerance {tol:.5f}")
+    if abs(por - 0.8) > tol:
+        fails.append(f"{tag}: porosity {por:.5f} against 0.8 (tolerance {tol:.5f})")
+    # 3. each sphere at its own draft
+    h = ZW - (P[:, 2] - R_)
+    cap = np.pi * h * h * (3 * R_ - h) / 3
+    err = np.max(np.abs(cap / (R * V) - 1))
+    print(f"[{tag}] submerged cap / (r V) - 1: max {err:.2e} (tolerance 1e-9)")
+    if err > 1e-9:
+        fails.append(f"{tag}: a sphere is not at its own draft ({err:.3e})")
+    # 4. the diameters are the volumes of the class blocks (log-normal medians)
+    N, t = 6, 0.1
+    dist = stats.lognorm(s=0.3, scale=0.1)
+    F = lambda x: (dist.cdf(x) - dist.cdf(0.05)) / (dist.cdf(0.2) - dist.cdf(0.05))
+    D = np.sort([np.sqrt(np.pi * d ** 3 / 6 / t) for d in diam.values()])
+    Fk = F(D)
+    want = (np.arange(N) + 0.5) / N
+    print(f"[{tag}] block sizes of the sphere volumes {np.round(D, 5)}; F(D_k) {np.round(Fk, 9)}")
+    if len(D) != N or np.max(np.abs(Fk - want)) > 1e-7:
+        fails.append(f"{tag}: sphere volumes are not the class blocks' volumes")
+    # 5. spheres float in one layer: a thickness profile is refused
+    bad = CASE_D.replace("thickness { type uniform; value 0.1; }",
+                         "thickness { type profile; points ((0 0.1) (1 0.2)); }")
+    with open(os.path.join(case, "system", "brashIceChannelDict"), "w") as f:
+        f.write(bad)
+    r = subprocess.run([TOOL, "-case", case], capture_output=True, text=True)
+    msg = r.stdout + r.stderr
+    ok = r.returncode != 0 and "shape" in msg and "brashIceChannelDict" in msg
+    print(f"[{tag}] spheres with a thickness profile: exit {r.returncode}, "
+          f"names the file and 'shape': {ok}")
+    if not ok:
+        fails.append(f"{tag}: spheres with a thickness profile not refused clearly: {msg[-300:]}")
+
+
 def main():
     fails = []
-    which = sys.argv[1:] or ["A", "B", "C"]
+    which = sys.argv[1:] or ["A", "B", "C", "D"]
     if "A" in which:
         run(CASE_A, fails, "A", lambda e: 0.1, 0.1, check_lognormal)
     if "C" in which:
@@ -301,6 +391,8 @@ def main():
     if "B" in which:
         prof = lambda e: float(np.interp(e, [0, 0.5, 1], [0.1, 0.1, 0.2]))
         run(CASE_B, fails, "B", prof, 0.05, check_table)
+    if "D" in which:
+        run_spheres(fails)
     for f_ in fails:
         print("FAIL:", f_)
     print("brashIceBuilder:", "FAILED" if fails else "passed")

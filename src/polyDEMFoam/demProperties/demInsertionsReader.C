@@ -754,15 +754,18 @@ void Foam::demInsertionsReader::readApproach
             << hi.z << "] (the layer the solid fraction is measured in), in "
             << dict.name() << nl << exit(FatalIOError);
     }
+    // All polyhedra or all spheres (the spheres' own diameters)
     for (const int t : ins.types)
     {
-        if (!userTypes[t].polyhedron)
+        if (userTypes[t].polyhedron != userTypes[ins.types[0]].polyhedron)
         {
             FatalIOErrorInFunction(id)
-                << "Entry '" << base.c_str() << "approach': particle type '"
-                << userTypes[t].name << "' is a sphere; the floating layer of "
-                << "an approach region places polyhedra, in " << dict.name()
-                << nl << exit(FatalIOError);
+                << "Entry '" << base.c_str() << "approach': particle types '"
+                << userTypes[ins.types[0]].name << "' and '"
+                << userTypes[t].name << "' are one a sphere and one a "
+                << "polyhedron; the floating layer of an approach region "
+                << "places one kind (all spheres or all polyhedra), in "
+                << dict.name() << nl << exit(FatalIOError);
         }
     }
 }

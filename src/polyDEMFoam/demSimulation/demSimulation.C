@@ -181,6 +181,7 @@ double Foam::demSimulation::meanParticleVolume(size_t k) const
     if (ins.approach)
     {
         // A floating layer: every shape of the listed types equally likely
+        // (spheres: the type's diameter)
         double v = 0;
         label n = 0;
         for (const int u : ins.types)
@@ -188,7 +189,10 @@ double Foam::demSimulation::meanParticleVolume(size_t k) const
             const auto& t = input_.userTypes()[u];
             for (int s = 0; s < t.nTypes; ++s, ++n)
             {
-                v += config.shapes[config.types[t.firstType + s].shapeIndex].volume;
+                const auto& type = config.types[t.firstType + s];
+                v += t.polyhedron
+                   ? config.shapes[type.shapeIndex].volume
+                   : 4.0/3.0*constant::mathematical::pi*pow3(type.radius);
             }
         }
         return v/n;
@@ -262,11 +266,13 @@ void Foam::demSimulation::checkApproachRegions() const
             const auto& t = input_.userTypes()[u];
             for (int s = 0; s < t.nTypes; ++s)
             {
+                const auto& type = config.types[t.firstType + s];
                 rMax = std::max
                 (
                     rMax,
-                    config.shapes[config.types[t.firstType + s].shapeIndex]
-                        .boundingRadius
+                    t.polyhedron
+                  ? config.shapes[type.shapeIndex].boundingRadius
+                  : type.radius
                 );
             }
         }

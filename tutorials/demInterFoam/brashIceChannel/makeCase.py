@@ -5,7 +5,7 @@ ice flowing past it at the towing speed (hull-fixed frame).
 
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
                    [-demStep DT] [-endTime T] [-hullDraft T] [-porosity P]
-                   [-dir DIR]
+                   [-shape cuboid|sphere] [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -32,6 +32,11 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
               solidFraction is 1 - P. The inflow's random placement jams
               near 0.5 coverage, so P < 0.5 makes it deliver less than the
               channel built at t = 0 (README, "Steady state"); 0 < P < 1
+  -shape S    the ice blocks: cuboid (default; 0.08-0.12 m in plan, 0.1 m
+              thick) or sphere (each block's volume as a sphere, d 0.10-
+              0.14 m: the spherical floes of the open codes, for the
+              polyhedra-against-spheres comparison; same ice volume and
+              porosity)
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -96,6 +101,7 @@ def main():
     size, d, openWater, U, kv, dtDem, end = "default", "case", False, 0.74, None, None, None
     draft = 0.25                 # the dummy hull's default draft (hull.py)
     porosity = 0.35              # the ice layer's plan porosity (the builder's default)
+    shape = "cuboid"
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
@@ -118,12 +124,16 @@ def main():
             porosity = number(a, args, "a porosity in (0, 1)")
             if not (0 < porosity < 1):
                 sys.exit(f"makeCase.py: -porosity {porosity:g}: expected 0 < P < 1")
+        elif a == "-shape":
+            shape = args.pop(0) if args else ""
+            if shape not in ("cuboid", "sphere"):
+                sys.exit(f"makeCase.py: -shape '{shape}': expected cuboid or sphere")
         elif a == "-hullDraft":
             draft = number(a, args, "a draft in m")
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -porosity P, -dir DIR)")
+                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -142,7 +152,7 @@ def main():
                  f"{zw - dmin[2]:g} m deep); expected T <= {zw - dmin[2] - P['cell']:g} m")
     info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
                             cellSize=P["cell"], iceThickness=ICE_THICKNESS,
-                            velocity=(U, 0.0, 0.0), snap=False, porosity=porosity,
+                            velocity=(U, 0.0, 0.0), snap=False, porosity=porosity, shape=shape,
                             bowPoints=32, hullLevels=2,
                             hullDict=f"type dummy; depth {HULL_DEPTH:g}; draft {draft:g};")
     ice = info["ice"]
@@ -345,19 +355,30 @@ boundaryField
     # its whole buoyancy. It enters the fluid through the inlet patch as
     # smoothly as it leaves through the outlet (README, "Ice inflow").
     # Sizes: the builder's classes (equal probability), each class with the
-    # builder's flat orientation, a random heading about z.
+    # builder's flat orientation, a random heading about z. Spheres: the
+    # region is the same slab (the same ice volume per area at the same
+    # solid fraction); they are placed at the mean of the classes' floating
+    # centres (within 5 mm of each class's: they settle to it in the approach)
     R = 0.1                      # >= the largest bounding radius
     xin = dmin[0]
     Lr = 0.3                     # region length along the flow
-    classes, orient = [], {}
+    classes, orient, centre = [], {}, {}
     if not openWater:
         import re
         src = open(f"{d}/constant/brashIce/insertion").read()
-        for m in re.finditer(r"particleType\s+(\w+);.*?orientation\s*\(([^)]*)\)", src, re.S):
-            if m.group(1) not in orient:
+        for m in re.finditer(r"particleType\s+(\w+);.*?position\s*\(([^)]*)\);"
+                             r"(?:\s*orientation\s*\(([^)]*)\))?", src, re.S):
+            if m.group(1) not in centre:
                 classes.append(m.group(1))
-                orient[m.group(1)] = m.group(2).split()
-    orientations = " ".join(f"({' '.join(f'{float(a):.6g}' for a in orient[c])})" for c in classes)
+                centre[m.group(1)] = float(m.group(2).split()[2])
+                if m.group(3) is not None:
+                    orient[m.group(1)] = m.group(3).split()
+    orientations = " ".join(f"({' '.join(f'{float(a):.6g}' for a in orient[c])})"
+                            for c in classes if c in orient)
+    height = sum(centre.values()) / len(centre) if centre else zlo + 0.5 * t
+    flat = "" if shape == "sphere" else f"""
+        orientations    ({orientations});   // flat, per class
+        randomYaw       true;"""
     insertion = "" if openWater else f"""    #include "brashIce/insertion"
     // The channel ahead of the hull is built by brashIceChannel; the inflow
     // keeps feeding it from upstream of the inlet (docs/demProperties.md,
@@ -365,9 +386,7 @@ boundaryField
     inlet
     {{
         type            inflow;
-        particleTypes   ({' '.join(classes)});     // the builder's classes, equally likely
-        orientations    ({orientations});   // flat, per class
-        randomYaw       true;
+        particleTypes   ({' '.join(classes)});     // the builder's classes, equally likely{flat}
         region          {{ type box; min ({xin - R - Lr:g} {y0:g} {zlo:.6g}); max ({xin - R:g} {y1:g} {zhi:.6g}); }}
         solidFraction   {1 - ice['porosity']:.4g};   // the built channel's
         velocity        {Uv};
@@ -378,7 +397,7 @@ boundaryField
         {{
             min     ({xin - R - Lr - 0.05:g} {y0 - 0.05:g} {zlo - 0.1:.6g});
             max     ({xin + R:g} {y1 + 0.05:g} {zhi + 0.1:.6g});
-            height  {zlo + 0.5 * t:.6g};     // centre of a block floating at its draft
+            height  {height:.6g};     // centre of a block floating at its draft
         }}
     }}
 """
@@ -454,7 +473,7 @@ output
                          zmin=dmin[2], zmax=dmax[2], waterLevel=zw, stemX=P["stemX"],
                          hullEnd=hullEnd, hullBeam=info["hullBeam"], hullDraft=draft, keelClearance=round(keelClearance, 9),
                          cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
-                         blocks=ice["blocks"], porosity=ice["porosity"],
+                         blocks=ice["blocks"], porosity=ice["porosity"], shape=shape,
                          iceThickness=ICE_THICKNESS, rhoWater=RHO_W,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
@@ -462,7 +481,7 @@ output
           f"{0 if openWater else ice['blocks']} blocks (porosity {ice['porosity']:.3f}), "
           f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s, "
           f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel), "
-          f"inflow solid fraction {1 - ice['porosity']:.4g}")
+          f"inflow solid fraction {1 - ice['porosity']:.4g}, {shape}s")
 
 
 main()

@@ -68,8 +68,8 @@ def makeBrashIceCase(case, full=False, porosity=0.35, packing="lattice", seed=1,
     sd = sizeDistribution or (f"type uniform; min {0.8 * blockSize}; max {1.2 * blockSize};")
     x0 = dmin[0] + iceGap
     length = stemX - iceGap - x0
-    shape_entry = "type cuboid;" if shape == "cuboid" else \
-        "type plate; corners 7; elongation 0.7; shapes 3;"
+    shape_entry = {"cuboid": "type cuboid;", "sphere": "type sphere;",
+                   "plate": "type plate; corners 7; elongation 0.7; shapes 3;"}[shape]
     with open(os.path.join(case, "system", "brashIceChannelDict"), "w") as f:
         f.write("// makeBrashIceCase: the brash-ice channel ahead of the hull\n"
                 f"channel {{ origin ({x0} {dmin[1] + iceGap}); length {length}; "

@@ -29,6 +29,13 @@ Method (what the code does, and why):
   * Blocks lie flat: a single-layer block floats with draft r t exactly
     (bottom at z_w - r t).  Stacked layers are shifted as a whole so that the
     submerged ice volume equals r times the ice volume (the layer's draft).
+  * `shape { type sphere; }`: the same blocks drawn and placed, each turned
+    into the sphere of its volume (d^3 pi/6 = D^2 t): the spherical floes of
+    the open codes, for a like-for-like comparison with the polyhedra (same
+    ice volume per class, same porosity by volume). Placement in plan uses
+    the regular 32-gon circumscribing the sphere's circle (never closer than
+    `gap`); one layer only; each sphere floats at its own draft (the cap
+    below z_w holds r of its volume).
 """
 import math
 import os
@@ -39,7 +46,8 @@ from . import convex
 from .foamDict import Dict, fatal, header
 
 DIST_TYPES = ["uniform", "normal", "logNormal", "table"]
-SHAPE_TYPES = ["cuboid", "plate"]
+SHAPE_TYPES = ["cuboid", "plate", "sphere"]
+SPHERE_PLAN_SIDES = 32       # the polygon a sphere is placed with in plan
 
 
 class SizeDistribution:
@@ -244,6 +252,10 @@ class Channel:
             self.aspect = s.get("aspectRatio", float, default=1.0, min=0.05, max=1.0)
             self.n_shapes = 1
             self.flatness = None
+        elif self.shape_type == "sphere":
+            s.check_keys(["type"])
+            self.n_shapes = 1
+            self.flatness = None
         else:
             s.check_keys(["type", "corners", "elongation", "shapes", "flatness"])
             self.corners = s.get("corners", int, default=7, min=3, max=30)
@@ -269,6 +281,11 @@ class Channel:
                 d.error("packing", f"packing lattice: the thickness {self.H.max()} must be a "
                         f"whole number of block thicknesses {self.t_block}")
             self.n_layers = int(round(nl))
+        if self.shape_type == "sphere" and not (
+                self.H.min() == self.H.max()
+                and abs(self.H.max() - self.t_block) <= 1e-12 * self.t_block):
+            d.error("shape", "spheres float in one layer: give a uniform thickness equal to "
+                    f"blockThickness ({self.t_block}), not {self.H.min()}..{self.H.max()}")
         self.classes = self.sizes.classes(self.n_classes)
         for k, (D, _) in enumerate(self.classes):
             t = self.thick(D)
@@ -308,18 +325,27 @@ class Channel:
             t = self.thick(D)
             row = []
             for s in range(self.n_shapes):
+                sphere = None
                 if self.shape_type == "cuboid":
                     a = D / math.sqrt(self.aspect)
                     b = D * math.sqrt(self.aspect)
                     plan = [(-a / 2, -b / 2), (a / 2, -b / 2), (a / 2, b / 2), (-a / 2, b / 2)]
                     size = (a, b, t)
+                elif self.shape_type == "sphere":
+                    sphere = (6 * D * D * t / math.pi) ** (1 / 3)   # the block's volume
+                    n = SPHERE_PLAN_SIDES
+                    rc = 0.5 * sphere / math.cos(math.pi / n)       # circumscribes the circle
+                    plan = [(rc * math.cos(2 * math.pi * (k + 0.5) / n),
+                             rc * math.sin(2 * math.pi * (k + 0.5) / n)) for k in range(n)]
+                    size = None
                 else:
                     plan = scaled(convex.principal_plan(
                         random_plate(rng, self.corners, self.elongation)), D * D)
                     size = None
-                P = convex.engine_frame(convex.prism_moments(plan, t))
+                P = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]] if sphere else \
+                    convex.engine_frame(convex.prism_moments(plan, t))
                 name = f"{self.prefix}C{k}" + (f"S{s}" if self.n_shapes > 1 else "")
-                row.append(dict(plan=plan, t=t, P=P, name=name, size=size, D=D))
+                row.append(dict(plan=plan, t=t, P=P, name=name, size=size, D=D, sphere=sphere))
             self.shapes.append(row)
 
     # -- placement ---------------------------------------------------------
@@ -359,7 +385,10 @@ class Channel:
                 b = self._place(rng, k, grid, cell, placed)
                 (placed if b is not None else failed).append(b if b is not None else k)
         self.blocks, self.failed = placed, failed
-        self._float_layer()
+        if self.shape_type == "sphere":
+            self._float_spheres()
+        else:
+            self._float_layer()
 
     def _place(self, rng, k, grid, cell, placed):
         row = self.shapes[k]
@@ -464,15 +493,44 @@ class Channel:
         return placed, failed
 
     def submerged(self, dz):
-        return sum(self.area(b) * min(b.z1 - b.z0, max(0.0, self.zw - (b.z0 + dz)))
-                   for b in self.blocks)
+        return sum(self._submerged(b, dz) for b in self.blocks)
+
+    def _submerged(self, b, dz):
+        d = self.shapes[b.cls][b.shape]["sphere"]
+        h = min(b.z1 - b.z0, max(0.0, self.zw - (b.z0 + dz)))  # depth of the bottom
+        if d is None:
+            return self.area(b) * h
+        return math.pi * h * h * (1.5 * d - h) / 3       # spherical cap, radius d/2
 
     def area(self, b):
         return self.shapes[b.cls][b.shape]["D"] ** 2
 
+    def volume(self, b):
+        """The block's ice volume, D^2 t (a sphere has its block's volume)."""
+        sh = self.shapes[b.cls][b.shape]
+        return sh["D"] ** 2 * sh["t"]
+
+    def _float_spheres(self):
+        """Each sphere at its own draft: the cap below z_w holds r of its
+        volume (bisection on the depth h of its bottom, pi h^2 (3R - h)/3)."""
+        self.V_ice = sum(self.volume(b) for b in self.blocks)
+        self.dz = 0.0
+        for b in self.blocks:
+            d = self.shapes[b.cls][b.shape]["sphere"]
+            target = self.r * math.pi * d ** 3 / 6
+            lo, hi = 0.0, d
+            for _ in range(200):
+                h = 0.5 * (lo + hi)
+                if math.pi * h * h * (1.5 * d - h) / 3 < target:
+                    lo = h
+                else:
+                    hi = h
+            b.z0 = self.zw - 0.5 * (lo + hi)
+            b.z1 = b.z0 + d
+
     def _float_layer(self):
         """Shift all blocks by one dz so that submerged ice = r x ice volume."""
-        Vi = sum(self.area(b) * (b.z1 - b.z0) for b in self.blocks)
+        Vi = sum(self.volume(b) for b in self.blocks)
         self.V_ice = Vi
         if not self.blocks:
             self.dz = 0.0
@@ -509,6 +567,12 @@ class Channel:
                  "// include inside particleTypes { #include \"brashIce/particleTypes\" }\n"]
         for k, s in used:
             sh = self.shapes[k][s]
+            if sh["sphere"] is not None:
+                lines.append(f"{sh['name']}\n{{\n    shape       sphere;\n"
+                             f"    material    {self.material};\n"
+                             f"    diameter    {sh['sphere']:.17g};   // the volume of a "
+                             f"{sh['D']:.6g} m x {sh['D']:.6g} m x {sh['t']:.6g} m block\n}}\n")
+                continue
             if sh["size"] is not None:
                 a, b, t = sh["size"]
                 geo = f"type box; size ({a:.17g} {b:.17g} {t:.17g});"
@@ -534,9 +598,12 @@ class Channel:
             for b in self.blocks:
                 if (b.cls, b.shape) != (k, s):
                     continue
+                zc = 0.5 * (b.z0 + b.z1)
+                if sh["sphere"] is not None:
+                    lines.append(f"        {{ position ({b.cx:.17g} {b.cy:.17g} {zc:.17g}); }}\n")
+                    continue
                 R = convex.matmul(convex.rot_z(b.yaw), sh["P"])
                 e = convex.euler_xyz_deg(R)
-                zc = 0.5 * (b.z0 + b.z1)
                 lines.append(f"        {{ position ({b.cx:.17g} {b.cy:.17g} {zc:.17g}); "
                              f"orientation ({e[0]:.17g} {e[1]:.17g} {e[2]:.17g}); }}\n")
             lines.append("    );\n}\n")
@@ -591,7 +658,8 @@ class Channel:
                       [ya + (j + 0.5) * (yb - ya) / 20 for j in range(20)]) / 20
             Hach = max(b.z1 for b in bs) - min(b.z0 for b in bs) if bs else 0.0
             # ice volume in the strip: each plan clipped to ya <= y <= yb
-            Vb = sum(_strip_area(b.plan, ya, yb) * (b.z1 - b.z0) for b in self.blocks)
+            Vb = sum(_strip_area(b.plan, ya, yb) / convex.polygon_area_centroid(b.plan)[0]
+                     * self.volume(b) for b in self.blocks)
             rows.append((0.5 * (ya + yb) - self.yc, Hin, Hach,
                          1 - Vb / (self.L * (yb - ya) * Hin)))
         with open(os.path.join(post, "thickness.dat"), "w") as f:

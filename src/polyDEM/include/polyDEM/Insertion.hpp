@@ -75,8 +75,9 @@ struct ListedParticle
     double radius = 0;
 };
 
-//- A floating layer (an inflow with an approach region): polyhedra of the
-//  given engine types (each drawn with equal probability), centres uniform
+//- A floating layer (an inflow with an approach region): polyhedra, or
+//  spheres of one diameter per type, of the given engine types (all of one
+//  kind; each drawn with equal probability), centres uniform
 //  in the plan rectangle [min, max] at the height z = height, oriented as
 //  orientation (and a uniform heading about yawAxis with randomYaw), placed
 //  one by one clear of each other, of the particles present and of the

@@ -126,11 +126,24 @@ InsertedParticles insertLayer
     {
         throw Error("a floating layer insertion needs at least one particle type");
     }
+    // All polyhedra or all spheres (each sphere type of one diameter): the
+    // particles are made by one path below
+    const bool spheres =
+        ins.types[0] >= 0 && ins.types[0] < int(config.types.size())
+     && config.types[ins.types[0]].shape == ShapeKind::sphere;
     for (const int t : ins.types)
     {
-        if (t < 0 || t >= int(config.types.size()) || config.types[t].shape != ShapeKind::polyhedron)
+        if (t < 0 || t >= int(config.types.size()))
         {
-            throw Error("a floating layer insertion places polyhedra only");
+            throw Error("a floating layer insertion: particle type index out of range");
+        }
+        if ((config.types[t].shape == ShapeKind::sphere) != spheres)
+        {
+            throw Error("a floating layer insertion places either polyhedra or spheres, not both");
+        }
+        if (spheres && !(config.types[t].radius > 0))
+        {
+            throw Error("a floating layer insertion of spheres needs each type's diameter");
         }
     }
 
@@ -168,11 +181,28 @@ InsertedParticles insertLayer
         return true;
     };
 
+    // A new body of a type: the polyhedron's shape, or the sphere's radius
+    auto newBody = [&](const int type)
+    {
+        Body b;
+        const ParticleType& t = config.types[type];
+        if (t.shape == ShapeKind::polyhedron)
+        {
+            b.shape = &config.shapes[t.shapeIndex];
+            b.r = b.shape->boundingRadius;
+        }
+        else
+        {
+            b.r = t.radius;
+        }
+        return b;
+    };
+
     // The particles that can touch the plan rectangle's blocks
     double rMax = 0;
     for (const int t : ins.types)
     {
-        rMax = std::max(rMax, config.shapes[config.types[t].shapeIndex].boundingRadius);
+        rMax = std::max(rMax, newBody(t).r);
     }
     std::vector<Body> near;
     for (std::size_t i = 0; i < present.size(); ++i)
@@ -197,9 +227,7 @@ InsertedParticles insertLayer
         const int type = ins.types[pick];
         const Quaternion base =
             ins.typeOrientations.size() == ins.types.size() ? ins.typeOrientations[pick] : ins.orientation;
-        Body b;
-        b.shape = &config.shapes[config.types[type].shapeIndex];
-        b.r = b.shape->boundingRadius;
+        Body b = newBody(type);
         bool found = false;
         for (std::size_t a = 0; a < ins.maxAttempts && !found; ++a)
         {
@@ -213,8 +241,10 @@ InsertedParticles insertLayer
             found = true;
             for (const PlaneWall& w : config.planes)
             {
-                if (w.motion.kind == MotionKind::fixed
-                    && polyhedronPlaneOverlap(b.shape->view(), b.x, b.q, w.point, w.normal).touching)
+                const bool touching = b.shape
+                    ? polyhedronPlaneOverlap(b.shape->view(), b.x, b.q, w.point, w.normal).touching
+                    : dot(b.x - w.point, w.normal) < b.r;
+                if (w.motion.kind == MotionKind::fixed && touching)
                 {
                     found = false;
                     break;
@@ -247,8 +277,24 @@ InsertedParticles insertLayer
     // tolerance: a block that reaches into one is dropped
     InsertionTypes ut;
     ut.firstType = ins.types[0];
-    ut.polyhedron = true;
-    ParticleState p = insertList(system, ut, placed, firstId);
+    ut.polyhedron = !spheres;
+    auto make = [&](const std::vector<ListedParticle>& list)
+    {
+        ParticleState q = insertList(system, ut, list, firstId);
+        if (spheres)
+        {
+            // insertList made them all of the first type: each its own type,
+            // with the mass of its own material
+            for (std::size_t i = 0; i < q.size(); ++i)
+            {
+                q.type[i] = list[i].type;
+                q.mass[i] = 0;
+            }
+            system.completeMassProperties(q);
+        }
+        return q;
+    };
+    ParticleState p = make(placed);
     if (!config.meshes.empty() && p.size() > 0)
     {
         const std::vector<InsertionOverlap> bad = insertionOverlaps(config, p, ParticleState(), false);
@@ -264,14 +310,16 @@ InsertedParticles insertLayer
         }
         if (kept.size() != placed.size())
         {
-            p = insertList(system, ut, kept, firstId);
+            p = make(kept);
         }
     }
     InsertedParticles result;
     result.particles = p;
     for (std::size_t i = 0; i < p.size(); ++i)
     {
-        result.volume += config.shapes[config.types[p.type[i]].shapeIndex].volume;
+        result.volume += spheres
+            ? 4.0 / 3.0 * M_PI * std::pow(p.radius[i], 3)
+            : config.shapes[config.types[p.type[i]].shapeIndex].volume;
     }
     return result;
 }
