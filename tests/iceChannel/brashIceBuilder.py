@@ -129,16 +129,20 @@ def body_vertices(case, geo):
     return P  # the file is in the body frame (centroid at the origin)
 
 
+def insertion_lists(case):
+    """(particle type, text) of each list the tool wrote to brashIce/insertion."""
+    with open(os.path.join(case, "constant", "brashIce", "insertion")) as f:
+        txt = f.read()
+    return [(re.search(r"particleType\s+(\w+);", body).group(1), body)
+            for name, body in re.findall(r"\n(\w+)\n\{(.*?)\n\}", txt, re.S)
+            if name != "FoamFile"]
+
+
 def read_case(case):
     with open(os.path.join(case, "constant", "brashIce", "particleTypes")) as f:
         types = dict(re.findall(r"\n(\w+)\n\{[^{}]*geometry\s*\{ ([^}]*) \}", f.read()))
-    with open(os.path.join(case, "constant", "brashIce", "insertion")) as f:
-        txt = f.read()
     blocks = []
-    for name, body in re.findall(r"\n(\w+)\n\{(.*?)\n\}", txt, re.S):
-        if name == "FoamFile":
-            continue
-        ptype = re.search(r"particleType\s+(\w+);", body).group(1)
+    for ptype, body in insertion_lists(case):
         V = body_vertices(case, types[ptype])
         for pos, ori in re.findall(r"position \(([^)]*)\); orientation \(([^)]*)\);", body):
             p = np.array([float(x) for x in pos.split()])
@@ -313,13 +317,9 @@ def run_spheres(fails, tag="D"):
     with open(os.path.join(case, "constant", "brashIce", "particleTypes")) as f:
         diam = {n: float(d) for n, d in
                 re.findall(r"\n(\w+)\n\{\s*shape\s+sphere;[^{}]*?diameter\s+(\S+);", f.read())}
-    with open(os.path.join(case, "constant", "brashIce", "insertion")) as f:
-        txt = f.read()
     spheres = []
-    for name, body in re.findall(r"\n(\w+)\n\{(.*?)\n\}", txt, re.S):
-        if name == "FoamFile":
-            continue
-        d = diam[re.search(r"particleType\s+(\w+);", body).group(1)]
+    for ptype, body in insertion_lists(case):
+        d = diam[ptype]
         for pos in re.findall(r"\{ position \(([^)]*)\); \}", body):
             spheres.append((np.array([float(x) for x in pos.split()]), 0.5 * d))
     n = len(spheres)
