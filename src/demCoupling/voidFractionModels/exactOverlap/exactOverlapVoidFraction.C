@@ -5,6 +5,7 @@
 #include "treeBoundBox.H"
 #include "Random.H"
 #include "polyDEM/PolyhedronOverlap.hpp"
+#include <algorithm>
 
 namespace Foam
 {
@@ -580,6 +581,28 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
     const Vec3 ez{0, 0, 1};
     const double h = 2*mag(cellBb.span()) + 2*r;
     const Vec3 cc = toP(cellBb.centre());
+    // The section polygon C(z) (out: one of the two buffers)
+    auto section = [&](double z, Vec3* bufA, Vec3* bufB, Vec3*& out) -> int
+    {
+        square(Vec3{cc.x, cc.y, z}, ez, h, bufA);
+        return clipPoly(bufA, bufB, 4, cn, cd, ncp, ez, false, tol, out);
+    };
+
+    // A cell whose planes are all vertical or horizontal (blockMesh's
+    // hexahedra) has one section polygon at every height inside it: clip it
+    // once, not at every quadrature point
+    bool prismatic = true;
+    for (int j = 0; j < ncp && prismatic; ++j)
+    {
+        prismatic =
+            std::abs(cn[j].z) <= 1e-14
+         || (std::abs(cn[j].x) <= 1e-14 && std::abs(cn[j].y) <= 1e-14);
+    }
+    Vec3 prismA[nBuf], prismB[nBuf];
+    Vec3* prism = nullptr;
+    const int nPrism =
+        prismatic ? section(cellBb.centre().z(), prismA, prismB, prism) : 0;
+
     auto area = [&](double z) -> double
     {
         const double rho2 = r*r - sqr(z - c.z());
@@ -589,9 +612,8 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
         }
         const double R = std::sqrt(rho2);
         Vec3 bufA[nBuf], bufB[nBuf];
-        square(Vec3{cc.x, cc.y, z}, ez, h, bufA);
-        Vec3* out = nullptr;
-        const int n = clipPoly(bufA, bufB, 4, cn, cd, ncp, ez, false, tol, out);
+        Vec3* out = prism;
+        const int n = prismatic ? nPrism : section(z, bufA, bufB, out);
         double A = 0;
         for (int i = 0; i < n; ++i)
         {
@@ -623,16 +645,75 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
     }
     Foam::sort(zs);
 
+    // Between two vertex heights the section of a cell with vertical sides
+    // (blockMesh, snappyHexMesh's background) is one polygon, and A(z) is
+    // smooth but where the circle of radius rho(z) touches an edge or passes
+    // a vertex of it: there A has a (rho - d)^(3/2) kink, which an adaptive
+    // rule refines towards at length. Those heights are break points too,
+    // and each piece is integrated in s, z = a + (b - a)(3s^2 - 2s^3), whose
+    // zero slope at both ends makes the kinks smooth in s. Oblique sections
+    // (sheared cells) move their kinks within a piece: the adaptive rule
+    // still meets the tolerance there, as before.
     const double tolAbs = sphereTolerance_*Vs;
+    const double r2 = r*r;
+    DynamicList<double> zk(16);
     double V = 0;
     for (label k = 0; k + 1 < zs.size(); ++k)
     {
-        const double dz = zs[k + 1] - zs[k];
-        if (dz <= 0)
+        const double z0 = zs[k], z1 = zs[k + 1];
+        if (!(z1 > z0))
         {
             continue;
         }
-        V += integrate(area, zs[k], zs[k + 1], tolAbs*dz/(zb - za));
+
+        zk.clear();
+        zk.append(z0);
+        auto addKink = [&](double d2)
+        {
+            if (d2 < r2)
+            {
+                const double w = std::sqrt(r2 - d2);
+                for (const double z : {c.z() - w, c.z() + w})
+                {
+                    if (z > z0 && z < z1)
+                    {
+                        zk.append(z);
+                    }
+                }
+            }
+        };
+        Vec3 bufA[nBuf], bufB[nBuf];
+        Vec3* out = nullptr;
+        const int n = section(0.5*(z0 + z1), bufA, bufB, out);
+        for (int i = 0; i < n; ++i)
+        {
+            const double px = out[i].x - c.x(), py = out[i].y - c.y();
+            const Vec3& q = out[(i + 1) % n];
+            const double ex = q.x - out[i].x, ey = q.y - out[i].y;
+            addKink(px*px + py*py);
+            const double e2 = ex*ex + ey*ey;
+            const double t = e2 > 0 ? -(px*ex + py*ey)/e2 : 0;
+            if (t > 0 && t < 1)
+            {
+                addKink(sqr(px + t*ex) + sqr(py + t*ey));
+            }
+        }
+        zk.append(z1);
+        std::sort(zk.begin(), zk.end());
+
+        for (label j = 0; j + 1 < zk.size(); ++j)
+        {
+            const double a = zk[j], dz = zk[j + 1] - zk[j];
+            if (!(dz > 0))
+            {
+                continue;
+            }
+            auto mapped = [&](double s)
+            {
+                return 6*dz*s*(1 - s)*area(a + dz*s*s*(3 - 2*s));
+            };
+            V += integrate(mapped, 0, 1, tolAbs*dz/(zb - za));
+        }
     }
     return V;
 }
