@@ -683,8 +683,9 @@ Foam::scalar Foam::exactOverlapVoidFraction::sphereOverlap
             }
         };
         Vec3 bufA[nBuf], bufB[nBuf];
-        Vec3* out = nullptr;
-        const int n = section(0.5*(z0 + z1), bufA, bufB, out);
+        Vec3* out = prism;
+        const int n =
+            prismatic ? nPrism : section(0.5*(z0 + z1), bufA, bufB, out);
         for (int i = 0; i < n; ++i)
         {
             const double px = out[i].x - c.x(), py = out[i].y - c.y();
