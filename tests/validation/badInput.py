@@ -20,6 +20,7 @@ that names what is wrong.
  11. an unused coefficient dictionary of a registered model (dividedCoeffs
      with voidFractionModel centre) is accepted, as in OpenFOAM (the run
      must succeed and say it is unused)
+ 12. couplingDirection sideways -> refused, with the valid values
 Each run must fail (non-zero exit) and its log contain the strings listed.
 """
 import os
@@ -62,6 +63,8 @@ tests = [
      1e-5, ["alphaMax -1", "GidaspowCoeffs", "must be in (0, 1]"]),
     ("adjustTimeStep", BASE, 1e-5,
      ["adjustTimeStep", "controlDict", "demPimpleFoam"]),
+    ("couplingDirection", BASE + "couplingDirection sideways;\n", 1e-5,
+     ["Unknown couplingDirection 'sideways'", "twoWay", "oneWay", "couplingProperties"]),
     ("CvmNegative",
      BASE.replace("pressureGradient", "pressureGradient virtualMass")
      + "virtualMassCoeffs { Cvm -0.5; }\n", 1e-5,

@@ -70,6 +70,7 @@ Foam::demCloud::demCloud
     nSubSteps_(1),
     weights_(),
     exchange_(mesh_),
+    oneWayFluidFraction_(),
     forceContext_(mesh_, settings_, rho_, U_, p_, weights_, previousUp_),
     forces_(),
     io_(mesh_.time())
@@ -129,6 +130,26 @@ Foam::demCloud::demCloud
     (
         typeNames_, sphericity_, crosswiseSphericity_, dnByDv_
     );
+
+    if (!settings_.twoWay())
+    {
+        oneWayFluidFraction_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "oneWayFluidFraction",
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE
+                ),
+                mesh_,
+                dimensionedScalar("one", dimless, 1)
+            )
+        );
+    }
 
     io_.openSummary();
 
@@ -258,7 +279,7 @@ void Foam::demCloud::computeForces
         tmp<volVectorField> tUseen;
         if (settings_.fluxVelocity())
         {
-            tUseen = fvc::reconstruct(alphaPhi)/exchange_.voidfraction();
+            tUseen = fvc::reconstruct(alphaPhi)/fluidFraction();
         }
         else
         {
@@ -288,7 +309,7 @@ void Foam::demCloud::computeForces
             submerged_->fractions
             (
                 particles_, volume_, shapes_, weights_,
-                exchange_.voidfraction(), fs.alpha1, fs.g,
+                fluidFraction(), settings_.twoWay(), fs.alpha1, fs.g,
                 submergedFraction_, usedPlane_
             );
         }
@@ -440,34 +461,68 @@ void Foam::demCloud::checkForcesFinite() const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+namespace
+{
+    //- couplingDirection oneWay: an exchange term the fluid does not get
+    template<class FieldType>
+    Foam::tmp<FieldType> withoutFeedback(Foam::tmp<FieldType> tf, bool twoWay)
+    {
+        if (!twoWay)
+        {
+            tf.ref() == Foam::dimensioned<typename FieldType::value_type>
+            (
+                "zero", tf().dimensions(), Foam::Zero
+            );
+        }
+        return tf;
+    }
+}
+
+
 Foam::tmp<Foam::volScalarField> Foam::demCloud::KslByRho() const
 {
-    return exchange_.KslByRho(rho_, settings_.implicitCoupling());
+    return withoutFeedback
+    (
+        exchange_.KslByRho(rho_, settings_.implicitCoupling()),
+        settings_.twoWay()
+    );
 }
 
 
 Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSourceByRho() const
 {
-    return exchange_.explicitSourceByRho(rho_, settings_.implicitCoupling());
+    return withoutFeedback
+    (
+        exchange_.explicitSourceByRho(rho_, settings_.implicitCoupling()),
+        settings_.twoWay()
+    );
 }
 
 
 Foam::tmp<Foam::volScalarField> Foam::demCloud::implicitCoefficient() const
 {
-    return exchange_.implicitCoefficient(settings_.implicitCoupling());
+    return withoutFeedback
+    (
+        exchange_.implicitCoefficient(settings_.implicitCoupling()),
+        settings_.twoWay()
+    );
 }
 
 
 Foam::tmp<Foam::volVectorField> Foam::demCloud::explicitSource() const
 {
-    return exchange_.explicitSource(settings_.implicitCoupling());
+    return withoutFeedback
+    (
+        exchange_.explicitSource(settings_.implicitCoupling()),
+        settings_.twoWay()
+    );
 }
 
 
 Foam::tmp<Foam::volScalarField> Foam::demCloud::voidfractionRate() const
 {
-    const volScalarField& eps = exchange_.voidfraction();
-    if (!voidfractionBeforeStep_)
+    const volScalarField& eps = fluidFraction();
+    if (!voidfractionBeforeStep_ || !settings_.twoWay())
     {
         return fvc::ddt(eps);
     }
@@ -491,7 +546,7 @@ void Foam::demCloud::evolve
     // A moving mesh: the particles as they are (the previous step's) on the
     // moved cells, for the rate at fixed points in space (voidfractionRate,
     // when the solver asked for it)
-    if (mesh_.moving() && voidfractionRateRequested_)
+    if (mesh_.moving() && voidfractionRateRequested_ && settings_.twoWay())
     {
         if (!voidfractionBeforeStep_)
         {
@@ -523,6 +578,13 @@ void Foam::demCloud::evolve
     else
     {
         voidfractionBeforeStep_.clear();
+    }
+
+    // One-way: the fluid fraction stays 1 on a mesh that refines (mapping
+    // interpolates it)
+    if (oneWayFluidFraction_.valid() && mesh_.changing())
+    {
+        oneWayFluidFraction_() == dimensionedScalar("one", dimless, 1.0);
     }
 
     const scalar t0 = io_.elapsedTime();

@@ -25,12 +25,25 @@ Foam::demCloudSettings::demCloudSettings(const dictionary& dict)
     (
         readChoice(dict, "fluidVelocity", {"flux", "cell"}, "flux") == "flux"
     ),
+    twoWay_
+    (
+        readChoice
+        (
+            dict, "couplingDirection", {"twoWay", "oneWay"}, "twoWay"
+        ) == "twoWay"
+    ),
     forceModelNames_(dict.get<wordList>("forceModels"))
 {
     Info<< "Reading couplingProperties (demCloud)" << endl;
     Info<< "    fluid velocity at the particles: "
         << (fluxVelocity_ ? "reconstruct(alphaPhi)/voidfraction" : "cell U")
         << endl;
+    if (!twoWay_)
+    {
+        Info<< "    couplingDirection oneWay: the particles feel the fluid;"
+            << " the fluid does not feel the particles (fluid fraction 1,"
+            << " no momentum exchange)" << endl;
+    }
 }
 
 
@@ -176,6 +189,7 @@ void Foam::demCloudSettings::checkEntries
     DynamicList<word> valid
     (wordList({
         "demBackend", "formulation", "momentumCoupling", "fluidVelocity",
+        "couplingDirection",
         "forceModels", "demStepsPerFluidStep", "particleShapes",
         "locateModel", "voidFractionModel", "smoothingModel"
     }));

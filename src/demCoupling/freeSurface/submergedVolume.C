@@ -235,6 +235,7 @@ void Foam::submergedVolume::fractions
     const List<demShape>& shapes,
     const demCouplingWeights& weights,
     const volScalarField& voidfraction,
+    const bool particlesDisplaceFluid,
     const volScalarField& alpha1,
     const vector& g,
     List<scalar>& f,
@@ -310,6 +311,8 @@ void Foam::submergedVolume::fractions
     const labelListList& cc = mesh_.cellCells();
     const scalarField& eps = voidfraction.primitiveField();
     const scalarField& a1 = alpha1.primitiveField();
+    // One-way coupling: the water does not make room for the particle
+    const scalar solidShare = particlesDisplaceFluid ? 1 : 0;
     List<DynamicList<label>> Scells(np);
     List<DynamicList<scalar>> Scap(np);
     List<scalar> water(np, scalar(0)), capacity(np, scalar(0));
@@ -335,7 +338,8 @@ void Foam::submergedVolume::fractions
         {
             // The solver's fluid volume (eps at least alphaMin, so it may
             // hold more than V - solid) plus the particle's own solid
-            const scalar cap = eps[c]*V[c] + own.lookup(c, 0)*volume[i];
+            const scalar cap =
+                eps[c]*V[c] + solidShare*own.lookup(c, 0)*volume[i];
             Scells[j].append(c);
             Scap[j].append(cap);
             water[j] += a1[c]*eps[c]*V[c];
@@ -372,7 +376,7 @@ void Foam::submergedVolume::fractions
             const scalar s = 0.5*(lo[j] + hi[j]);
             const scalar Fj =
                 F[j] - water[j]
-              - volume[i]
+              - solidShare*volume[i]
                *fractionBelow
                 (
                     particles.position[i], particles.orientation[i],
@@ -397,7 +401,7 @@ void Foam::submergedVolume::fractions
         {
             f[i] = 0;
         }
-        else if (water[j] >= capacity[j] - volume[i])
+        else if (water[j] >= capacity[j] - solidShare*volume[i])
         {
             f[i] = 1;   // S full of water: submerged
         }

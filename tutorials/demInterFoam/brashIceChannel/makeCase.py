@@ -102,6 +102,7 @@ def main():
     draft = 0.25                 # the dummy hull's default draft (hull.py)
     porosity = 0.35              # the ice layer's plan porosity (the builder's default)
     shape = "cuboid"
+    direction = "twoWay"         # couplingDirection: the fluid sees the ice
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
@@ -128,12 +129,14 @@ def main():
             shape = args.pop(0) if args else ""
             if shape not in ("cuboid", "sphere"):
                 sys.exit(f"makeCase.py: -shape '{shape}': expected cuboid or sphere")
+        elif a == "-oneWay":
+            direction = "oneWay"
         elif a == "-hullDraft":
             draft = number(a, args, "a draft in m")
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -dir DIR)")
+                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -oneWay, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -276,6 +279,9 @@ sigma 0.07;
     write(f"{d}/constant/couplingProperties", "couplingProperties", f"""couplingMode        unresolved;     // blocks of 2-4 cells: semi-resolved with exactOverlap
 formulation         setI;
 momentumCoupling    implicit;
+// twoWay: the water sees the ice (volume and momentum); oneWay (-oneWay):
+// drag and buoyancy on the ice only, the water that of the open-water run
+couplingDirection   {direction};
 demStepsPerFluidStep {nDem};
 locateModel         hinted;
 voidFractionModel   exactOverlap;   // the exact overlap of each block with each cell
