@@ -5,7 +5,8 @@ ice flowing past it at the towing speed (hull-fixed frame).
 
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
                    [-demStep DT] [-endTime T] [-hullDraft T] [-porosity P]
-                   [-shape cuboid|sphere] [-dir DIR]
+                   [-shape cuboid|sphere] [-rollingFriction MU] [-oneWay]
+                   [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -37,6 +38,14 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
               0.14 m: the spherical floes of the open codes, for the
               polyhedra-against-spheres comparison; same ice volume and
               porosity)
+  -rollingFriction MU  rolling resistance (demProperties rolling
+              elasticPlastic, Ai et al.) with coefficient MU for ice on ice
+              and ice on the hull, 0 on the frictionless tank walls
+              (default: none). For spheres standing in for blocks: the
+              blocks' tipping arm t/2 over the sphere's radius is 0.7-0.8
+  -oneWay     couplingDirection oneWay: drag and buoyancy act on the ice,
+              the water does not see the ice (its flow is the open-water
+              run's); default two-way
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -103,6 +112,7 @@ def main():
     porosity = 0.35              # the ice layer's plan porosity (the builder's default)
     shape = "cuboid"
     direction = "twoWay"         # couplingDirection: the fluid sees the ice
+    rollingMu = None             # rolling resistance (elasticPlastic), none by default
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
@@ -129,6 +139,10 @@ def main():
             shape = args.pop(0) if args else ""
             if shape not in ("cuboid", "sphere"):
                 sys.exit(f"makeCase.py: -shape '{shape}': expected cuboid or sphere")
+        elif a == "-rollingFriction":
+            rollingMu = number(a, args, "a rolling friction coefficient >= 0")
+            if not (rollingMu >= 0):
+                sys.exit(f"makeCase.py: -rollingFriction {rollingMu:g}: expected a coefficient >= 0")
         elif a == "-oneWay":
             direction = "oneWay"
         elif a == "-hullDraft":
@@ -136,7 +150,7 @@ def main():
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -oneWay, -dir DIR)")
+                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -rollingFriction MU, -oneWay, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -407,6 +421,13 @@ boundaryField
         }}
     }}
 """
+    # Rolling resistance (-rollingFriction): Ai et al.'s elastic-plastic
+    # spring-dashpot (docs/dem.md), none on the frictionless tank walls
+    rollingLaw = rolling = rolling0 = ""
+    if rollingMu is not None:
+        rollingLaw = "\n    rolling                     elasticPlastic;"
+        rolling = f" rollingFriction {rollingMu:g};"
+        rolling0 = " rollingFriction 0;"
     write(f"{d}/constant/demProperties", "demProperties", f"""device          cpu;            // cpu | cuda
 
 timeStep        {dtDem:g};      // [s]; {nDem} DEM steps per fluid step
@@ -431,7 +452,7 @@ contactModel
 {{
     law                         overlapVolume;
     volumetricStiffness         {kv:g};     // [N/m3]
-    tangentialStiffnessRatio    0.2857;
+    tangentialStiffnessRatio    0.2857;{rollingLaw}
 }}
 
 materials
@@ -445,9 +466,9 @@ materials
 // water in the hull-fixed frame: no friction there
 interactions
 {{
-    default     {{ restitution 0.3; friction 0.3; }}
-    iceOnHull   {{ materials (ice steel); restitution 0.3; friction 0.1; }}
-    iceOnTank   {{ materials (ice tank); restitution 0.3; friction 0; }}
+    default     {{ restitution 0.3; friction 0.3;{rolling} }}
+    iceOnHull   {{ materials (ice steel); restitution 0.3; friction 0.1;{rolling} }}
+    iceOnTank   {{ materials (ice tank); restitution 0.3; friction 0;{rolling0} }}
 }}
 
 particleTypes
@@ -480,6 +501,8 @@ output
                          hullEnd=hullEnd, hullBeam=info["hullBeam"], hullDraft=draft, keelClearance=round(keelClearance, 9),
                          cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
                          blocks=ice["blocks"], porosity=ice["porosity"], shape=shape,
+                         couplingDirection=direction,
+                         rollingFriction=0 if rollingMu is None else rollingMu,
                          iceThickness=ICE_THICKNESS, rhoWater=RHO_W,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
@@ -487,7 +510,9 @@ output
           f"{0 if openWater else ice['blocks']} blocks (porosity {ice['porosity']:.3f}), "
           f"cells {P['cell']:g} m, to {P['end']:g} s, dt {dt:g} / {dtDem:g} s, "
           f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel), "
-          f"inflow solid fraction {1 - ice['porosity']:.4g}, {shape}s")
+          f"inflow solid fraction {1 - ice['porosity']:.4g}, {shape}s"
+          + (f", rolling friction {rollingMu:g}" if rollingMu is not None else "")
+          + (", one-way coupling" if direction == "oneWay" else ""))
 
 
 main()
