@@ -25,27 +25,18 @@ Checked:
     settlingVelocity.py; the rest is the fluid resolution, the same in
     both runs).
 """
-import math
-import os
 import hedracase as hc
 import liggghtscase as lc
-from dragLaws import cd_sn
+from dragLaws import cd_sn, terminal_velocity
 
 rho, nu, rhoP, d, g = 1000.0, 1e-6, 2500.0, 5e-4, 9.81
-Vp = math.pi / 6 * d**3
 dtDem = 5e-6
 centre = (0.0125, 0.0125, 0.085)
 box = ((0, 0, 0), (0.03, 0.03, 0.1))
 
 
 def terminal():
-    W = (rhoP - rho) * g * Vp
-    lo, hi = 1e-6, 10.0
-    for _ in range(200):
-        v = 0.5 * (lo + hi)
-        F = 0.5 * rho * cd_sn(v * d / nu) * math.pi / 4 * d**2 * v**2
-        lo, hi = (v, hi) if F < W else (lo, v)
-    return 0.5 * (lo + hi)
+    return terminal_velocity(cd_sn, d, rhoP, rho, nu, g)
 
 
 COUPLING = """formulation setI;

@@ -22,11 +22,10 @@ Checked (tolerances):
   (rho_b - rho_a)/(rho_w - rho_a) H within 3 % (vofFloatingBlocks.py's
   tolerance), mean over the last 30 % of 3 s.
 """
-import math
 import os
 import hedracase as hc
 import vofcase as vc
-from dragLaws import cd_sn
+from dragLaws import cd_sn, terminal_velocity
 
 results = []
 
@@ -54,18 +53,7 @@ def same_fields(label, a, b, names):
 
 
 # --- demPimpleFoam: a settling sphere -------------------------------------
-rho, nu, rhoP, d, g = 1000.0, 1e-6, 2500.0, 5e-4, 9.81
-Vp = math.pi / 6 * d**3
-
-
-def terminal(cd):
-    W = (rhoP - rho) * g * Vp
-    lo, hi = 1e-6, 10.0
-    for _ in range(200):
-        v = 0.5 * (lo + hi)
-        F = 0.5 * rho * cd(v * d / nu) * math.pi / 4 * d**2 * v**2
-        lo, hi = (v, hi) if F < W else (lo, v)
-    return 0.5 * (lo + hi)
+rho, nu, rhoP, d = 1000.0, 1e-6, 2500.0, 5e-4
 
 
 def settling_case(name, number, direction):
@@ -99,7 +87,7 @@ rows = hc.read_summary(sphere)
 tEnd = rows[-1][0]
 late = [r for r in rows if r[0] >= tEnd - 0.05 - 1e-9]
 v = -sum(r[hc.COLS["Up"]][2] for r in late) / len(late)
-vt = terminal(cd_sn)
+vt = terminal_velocity(cd_sn, d, rhoP, rho, nu)
 print(f"sphere: v_t = {vt:.6f} m/s, Re_t = {vt * d / nu:.2f}; simulated {v:.6f} m/s")
 hc.check("demPimpleFoam one-way: Schiller-Naumann terminal velocity [m/s]", v, vt, 1e-4, results)
 

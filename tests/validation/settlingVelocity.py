@@ -18,22 +18,14 @@ Reference: v_t solving (rho_p - rho) g Vp = 1/2 rho Cd(Re) pi d^2/4 v^2.
 Measured: mean settling velocity over the last 0.05 s of 0.3 s.
 """
 import math
-import sys
 import hedracase as hc
-from dragLaws import cd_sn, cd_hl
+from dragLaws import cd_sn, cd_hl, terminal_velocity
 
 rho, nu, rhoP, d, g = 1000.0, 1e-6, 2500.0, 5e-4, 9.81
-Vp = math.pi / 6 * d**3
 
 
 def terminal(cd):
-    W = (rhoP - rho) * g * Vp
-    lo, hi = 1e-6, 10.0
-    for _ in range(200):
-        v = 0.5 * (lo + hi)
-        F = 0.5 * rho * cd(v * d / nu) * math.pi / 4 * d**2 * v**2
-        lo, hi = (v, hi) if F < W else (lo, v)
-    return 0.5 * (lo + hi)
+    return terminal_velocity(cd, d, rhoP, rho, nu, g)
 
 
 cases = [
