@@ -15,8 +15,11 @@ Runs (NAME: the ice run's makeCase.py options):
   U0.3 U0.5 U1.0   cuboids at 0.3, 0.5, 1.0 m/s (with polyhedra at 0.74:
                    the speed sweep)
 Defaults: all runs; the default channel at -porosity 0.8; ice runs to
--endTime 20 s, means over the window from -window 6 s; open-water runs to
--openWaterEndTime 3 s, their mean over the function object's MSER-5 window.
+-endTime 20 s, means over the window from -window 6 s. The open-water runs
+go as long (-openWaterEndTime, default -endTime) and their mean is taken
+over the same window: the open-water force on this hull drifts over tens of
+seconds (README, "One-way against two-way"), so a mean over an earlier,
+shorter window would bias the ice resistance.
 -test: the CTest-size channel (-test of makeCase.py) and its porosity,
 0.4 s, window from 0.2 s: checks that the study runs, not physics.
 -np N: each run's fluid on N ranks (decomposePar, mpirun).
@@ -26,7 +29,9 @@ Each ice run is DIR/<NAME>/ice with DIR/<NAME>/openWater a link to the
 open-water run at its speed, DIR/openWater_U<speed> (run once per speed).
 The means come from iceSteady.py (10 batch means over the window, the
 standard error of the mean from them; the trends of the blocks ahead of
-the stem and of the ice load over the window say whether it is steady).
+the stem and of the ice load over the window say whether it is steady);
+ice resistance = total - open water, both over the window, the errors
+added in quadrature.
 
 Writes DIR/study.dat (one row per run, plain columns), DIR/study.md (the
 table and the differences the study asks about, for the README) and
@@ -41,6 +46,8 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from iceSteady import batch_mean  # noqa: E402
 
 RUNS = {
     "polyhedra": (0.74, []),
@@ -133,14 +140,27 @@ def steady_means(rundir, window):
     return means, trends
 
 
-def open_water_mean(ow):
-    """Rtotal of the open-water run's iceResistance mean (MSER-5 window)."""
-    f = os.path.join(ow, "postProcessing", "resistance", "0", "resistanceMean.dat")
-    for line in open(f):
+def open_water_mean(ow, t0, t1):
+    """The open-water run's total force on the hull over [t0, t1] (10 batch
+    means): mean, standard error, and the window it covers."""
+    path = os.path.join(ow, "postProcessing", "resistance", "0", "resistance.dat")
+    cols, x, t = None, [], []
+    for line in open(path):
+        if line.startswith("# time"):
+            cols = line[1:].split()
+            continue
+        if line.startswith("#") or not line.strip():
+            continue
         w = line.split()
-        if w and w[0] == "Rtotal":
-            return float(w[1]), float(w[2])
-    fail(f"no Rtotal in {f}")
+        tt, v = float(w[0]), float(w[cols.index("Rtotal")])
+        if t0 - 1e-9 <= tt <= t1 + 1e-9 and math.isfinite(v):
+            t.append(tt)
+            x.append(v)
+    if len(x) < 20:
+        fail(f"{ow}: the open-water run has {len(x)} samples in the ice run's window"
+             f" {t0:g}-{t1:g} s; run it as long as the ice run (-openWaterEndTime)")
+    mu, se, _ = batch_mean(x, 0)
+    return (mu, se), (t[0], t[-1])
 
 
 def tabulate(top, names, window):
@@ -153,7 +173,7 @@ def tabulate(top, names, window):
             continue
         I = info(ice)
         means, tr = steady_means(rundir, window)
-        ow = open_water_mean(os.path.join(rundir, "openWater"))
+        ow, owWin = open_water_mean(os.path.join(rundir, "openWater"), tr["t0"], tr["t1"])
         end = float(I["end"])
         cpu = cpu_time(ice)
         rows.append(dict(
@@ -162,7 +182,8 @@ def tabulate(top, names, window):
             coupling=I.get("couplingDirection", "twoWay"), porosity=float(I["porosity"]),
             t0=tr["t0"], t1=tr["t1"], samples=means["Rice"][2],
             Rice=means["Rice"][:2], Rfluid=means["Rfluid"][:2], Rtotal=means["Rtotal"][:2],
-            RiceNet=means["RiceNet"][:2], openWater=ow,
+            RiceNet=(means["Rtotal"][0] - ow[0], math.hypot(means["Rtotal"][1], ow[1])),
+            openWater=ow, openWaterWindow=owWin,
             nAhead=tr["nAhead"], nTrend=tr["nTrend"], RTrend=tr["RTrend"],
             cpuPerSecond=cpu / end if end > 0 else float("nan")))
     if not rows:
@@ -173,7 +194,7 @@ def tabulate(top, names, window):
                 " +- the standard error of the mean\n")
         f.write("# name U[m/s] shape rollingFriction coupling porosity windowStart[s]"
                 " windowEnd[s] samples Rice[N] se RfluidHull[N] se Rtotal[N] se"
-                " openWater[N] se RiceNet[N] se blocksAhead blocksAheadTrend[1/s] se"
+                " openWaterSameWindow[N] se RiceNet[N] se blocksAhead blocksAheadTrend[1/s] se"
                 " RiceTrend[N/s] se cpuPerSimulatedSecond[s]\n")
         for r in rows:
             f.write(f"{r['name']} {r['U']:g} {r['shape']} {r['rolling']:g} {r['coupling']}"
@@ -300,7 +321,7 @@ def main():
             fail(f"unknown option {a} (study.py -help)")
     end = end if end is not None else (0.4 if test else 20.0)
     window = window if window is not None else (0.2 if test else 6.0)
-    owEnd = owEnd if owEnd is not None else (0.4 if test else 3.0)
+    owEnd = owEnd if owEnd is not None else end
     if window >= end:
         fail(f"-window {window:g}: expected a window start before -endTime {end:g}")
     top = os.path.abspath(top or ("study-test" if test else "study"))
