@@ -51,22 +51,13 @@ check("study.dat rows", names == ["polyhedra", "oneWay"] and finite,
       f"runs {names}, all means finite: {finite}")
 
 
+sys.path.insert(0, tut)
+from study import resistance_series  # noqa: E402
+
+
 def series(case):
     """time -> (Rfluid, Rice, contacts) of an iceResistance resistance.dat."""
-    path = os.path.join(case, "postProcessing/resistance/0/resistance.dat")
-    cols = None
-    d = {}
-    for line in open(path):
-        if line.startswith("# time"):
-            cols = line[1:].split()
-            continue
-        if line.startswith("#") or not line.strip():
-            continue
-        w = line.split()
-        d[round(float(w[0]), 9)] = (float(w[cols.index("Rfluid")]),
-                                    float(w[cols.index("Rice")]),
-                                    float(w[cols.index("contacts")]))
-    return d
+    return resistance_series(case, ["Rfluid", "Rice", "contacts"])
 
 
 ow = series(os.path.join(top, "openWater_U0.74"))

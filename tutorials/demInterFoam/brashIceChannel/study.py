@@ -140,11 +140,11 @@ def steady_means(rundir, window):
     return means, trends
 
 
-def open_water_mean(ow, t0, t1):
-    """The open-water run's total force on the hull over [t0, t1] (10 batch
-    means): mean, standard error, and the window it covers."""
-    path = os.path.join(ow, "postProcessing", "resistance", "0", "resistance.dat")
-    cols, x, t = None, [], []
+def resistance_series(case, names):
+    """time -> tuple of the named columns of a case's iceResistance
+    postProcessing/resistance/0/resistance.dat."""
+    path = os.path.join(case, "postProcessing", "resistance", "0", "resistance.dat")
+    cols, d = None, {}
     for line in open(path):
         if line.startswith("# time"):
             cols = line[1:].split()
@@ -152,10 +152,17 @@ def open_water_mean(ow, t0, t1):
         if line.startswith("#") or not line.strip():
             continue
         w = line.split()
-        tt, v = float(w[0]), float(w[cols.index("Rtotal")])
-        if t0 - 1e-9 <= tt <= t1 + 1e-9 and math.isfinite(v):
-            t.append(tt)
-            x.append(v)
+        d[round(float(w[0]), 9)] = tuple(float(w[cols.index(n)]) for n in names)
+    return d
+
+
+def open_water_mean(ow, t0, t1):
+    """The open-water run's total force on the hull over [t0, t1] (10 batch
+    means): mean, standard error, and the window it covers."""
+    series = resistance_series(ow, ["Rtotal"])
+    t = [tt for tt in sorted(series)
+         if t0 - 1e-9 <= tt <= t1 + 1e-9 and math.isfinite(series[tt][0])]
+    x = [series[tt][0] for tt in t]
     if len(x) < 20:
         fail(f"{ow}: the open-water run has {len(x)} samples in the ice run's window"
              f" {t0:g}-{t1:g} s; run it as long as the ice run (-openWaterEndTime)")
@@ -350,4 +357,5 @@ def main():
     tabulate(top, names, window)
 
 
-main()
+if __name__ == "__main__":
+    main()
