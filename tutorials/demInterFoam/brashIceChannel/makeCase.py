@@ -6,7 +6,7 @@ ice flowing past it at the towing speed (hull-fixed frame).
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
                    [-demStep DT] [-endTime T] [-hullDraft T] [-porosity P]
                    [-shape cuboid|sphere] [-rollingFriction MU] [-oneWay]
-                   [-dir DIR]
+                   [-noOpenWaterFile] [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -46,6 +46,12 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
   -oneWay     couplingDirection oneWay: drag and buoyancy act on the ice,
               the water does not see the ice (its flow is the open-water
               run's); default two-way
+  -noOpenWaterFile  the ice run's iceResistance does not read the
+              open-water run's mean (../openWater/...resistanceMean.dat,
+              which must exist when the ice run starts); its RiceNet is
+              then Rtotal. study.py uses it: it subtracts the open water
+              over the ice run's own window, and the two runs can go at
+              the same time
 
 What the hull-fixed frame means for the boundaries:
   inlet (x min)   water in at U below the level, air above (alpha from
@@ -113,6 +119,7 @@ def main():
     shape = "cuboid"
     direction = "twoWay"         # couplingDirection: the fluid sees the ice
     rollingMu = None             # rolling resistance (elasticPlastic), none by default
+    owFile = True                # the ice run reads the open-water run's mean
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
     args = sys.argv[1:]
     while args:
@@ -145,12 +152,14 @@ def main():
                 sys.exit(f"makeCase.py: -rollingFriction {rollingMu:g}: expected a coefficient >= 0")
         elif a == "-oneWay":
             direction = "oneWay"
+        elif a == "-noOpenWaterFile":
+            owFile = False
         elif a == "-hullDraft":
             draft = number(a, args, "a draft in m")
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -rollingFriction MU, -oneWay, -dir DIR)")
+                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -rollingFriction MU, -oneWay, -noOpenWaterFile, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -230,7 +239,7 @@ functions
         direction       (1 0 0);
         CofR            ({P['stemX']:g} 0 {zw:g});
         nBatches        10;
-        {'' if openWater else 'openWaterFile   "../openWater/postProcessing/resistance/0/resistanceMean.dat";'}
+        {'' if (openWater or not owFile) else 'openWaterFile   "../openWater/postProcessing/resistance/0/resistanceMean.dat";'}
     }}
     // The water through each open boundary (with the solver's own
     // postProcessing/demInterFoam/<t0>/waterVolume.dat: the water balance)

@@ -5,7 +5,7 @@ tabulates their steady means.
 
 Usage: study.py [-test] [-runs "NAME ..."] [-endTime T] [-window T0]
                 [-openWaterEndTime T] [-porosity P] [-np N] [-dir DIR]
-                [-tabulate]
+                [-part openWater | ice] [-tabulate]
 
 Runs (NAME: the ice run's makeCase.py options):
   polyhedra        cuboid blocks, two-way coupling, 0.74 m/s
@@ -14,15 +14,23 @@ Runs (NAME: the ice run's makeCase.py options):
   oneWay           cuboids, -oneWay (drag and buoyancy on the ice only)
   U0.3 U0.5 U1.0   cuboids at 0.3, 0.5, 1.0 m/s (with polyhedra at 0.74:
                    the speed sweep)
-Defaults: all runs; the default channel at -porosity 0.8; ice runs to
--endTime 20 s, means over the window from -window 6 s. The open-water runs
-go as long (-openWaterEndTime, default -endTime) and their mean is taken
-over the same window: the open-water force on this hull drifts over tens of
-seconds (README, "One-way against two-way"), so a mean over an earlier,
-shorter window would bias the ice resistance.
+Defaults: all runs; the default channel at -porosity 0.8; means over the
+window from -window 6 s at the report's 0.74 m/s, and at another speed U
+from 6 s x 0.74/U: the window opens when the hull has passed the same
+length of channel (4.4 m), so a slow run is not averaged over its filling
+(the ice ahead of the bow takes a time ~ 1/U to build up). Each ice run
+goes to its window start + 14 s (20 s at 0.74 m/s, 28.8 s at 0.3 m/s)
+unless -endTime T sets one end for all. The open-water runs go as long as
+the ice runs of their speed (-openWaterEndTime sets another end) and their
+mean is taken over the same window: the open-water force on this hull
+drifts over tens of seconds (README, "One-way against two-way"), so a mean
+over an earlier, shorter window would bias the ice resistance.
 -test: the CTest-size channel (-test of makeCase.py) and its porosity,
 0.4 s, window from 0.2 s: checks that the study runs, not physics.
 -np N: each run's fluid on N ranks (decomposePar, mpirun).
+-part openWater | ice: only the open-water runs of the named runs' speeds,
+or only the ice runs (their open water made before or alongside, e.g. on
+another core); then the table of those found.
 -tabulate: no runs; tabulate those found in DIR.
 
 Each ice run is DIR/<NAME>/ice with DIR/<NAME>/openWater a link to the
@@ -48,6 +56,16 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from iceSteady import batch_mean  # noqa: E402
+
+U_REF = 0.74        # the report's towing speed [m/s]: -window is given there
+WINDOW_LENGTH = 14  # default run length after the window start [s]
+
+
+def window_start(window, U):
+    """The window start at speed U: the same length of channel passed as in
+    -window seconds at U_REF."""
+    return window * U_REF / U
+
 
 RUNS = {
     "polyhedra": (0.74, []),
@@ -179,7 +197,7 @@ def tabulate(top, names, window):
             print(f"study.py: {name}: no run in {ice}, left out of the table")
             continue
         I = info(ice)
-        means, tr = steady_means(rundir, window)
+        means, tr = steady_means(rundir, window_start(window, float(I["speed"])))
         ow, owWin = open_water_mean(os.path.join(rundir, "openWater"), tr["t0"], tr["t1"])
         end = float(I["end"])
         cpu = cpu_time(ice)
@@ -278,7 +296,7 @@ def tabulate(top, names, window):
 
 def main():
     args = sys.argv[1:]
-    test, names, np_, only_tab = False, list(RUNS), 1, False
+    test, names, np_, only_tab, part = False, list(RUNS), 1, False, None
     end = window = owEnd = porosity = top = None
 
     def value(opt):
@@ -319,6 +337,10 @@ def main():
             np_ = int(number(a, 0))
         elif a == "-dir":
             top = value(a)
+        elif a == "-part":
+            part = value(a)
+            if part not in ("openWater", "ice"):
+                fail(f"-part {part}: expected openWater or ice")
         elif a == "-tabulate":
             only_tab = True
         elif a in ("-h", "-help", "--help"):
@@ -326,11 +348,20 @@ def main():
             return
         else:
             fail(f"unknown option {a} (study.py -help)")
-    end = end if end is not None else (0.4 if test else 20.0)
     window = window if window is not None else (0.2 if test else 6.0)
-    owEnd = owEnd if owEnd is not None else end
-    if window >= end:
-        fail(f"-window {window:g}: expected a window start before -endTime {end:g}")
+
+    def run_end(U):
+        """The ice run's end at speed U: -endTime, else the window start + 14 s."""
+        if end is not None:
+            return end
+        return 0.4 if test else round(window_start(window, U) + WINDOW_LENGTH, 1)
+
+    for n in names:
+        U = RUNS[n][0]
+        if window_start(window, U) >= run_end(U):
+            fail(f"-window {window:g}: at {U:g} m/s ({n}) the window starts at"
+                 f" {window_start(window, U):g} s, not before the run's end {run_end(U):g} s"
+                 f" (-endTime)")
     top = os.path.abspath(top or ("study-test" if test else "study"))
     os.makedirs(top, exist_ok=True)
 
@@ -338,12 +369,13 @@ def main():
         size = ["-test"] if test else []
         poro = [] if (test and porosity is None) else ["-porosity", f"{porosity or 0.8:g}"]
         speeds = sorted({RUNS[n][0] for n in names})
-        for U in speeds:
+        for U in (speeds if part != "ice" else []):
             ow = os.path.join(top, f"openWater_U{U:g}")
             print(f"study.py: open water at {U:g} m/s -> {ow}", flush=True)
-            run_case(ow, size + ["-openWater", "-speed", f"{U:g}", "-endTime", f"{owEnd:g}"]
+            owT = owEnd if owEnd is not None else run_end(U)
+            run_case(ow, size + ["-openWater", "-speed", f"{U:g}", "-endTime", f"{owT:g}"]
                      + poro, np_)
-        for name in names:
+        for name in (names if part != "openWater" else []):
             U, opts = RUNS[name]
             rundir = os.path.join(top, name)
             os.makedirs(rundir, exist_ok=True)
@@ -353,7 +385,10 @@ def main():
             os.symlink(os.path.join("..", f"openWater_U{U:g}"), link)
             print(f"study.py: {name} -> {rundir}/ice", flush=True)
             run_case(os.path.join(rundir, "ice"),
-                     size + ["-speed", f"{U:g}", "-endTime", f"{end:g}"] + poro + opts, np_)
+                     size + ["-speed", f"{U:g}", "-endTime", f"{run_end(U):g}", "-noOpenWaterFile"]
+                     + poro + opts, np_)
+    if part == "openWater":
+        return
     tabulate(top, names, window)
 
 
