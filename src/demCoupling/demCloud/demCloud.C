@@ -397,7 +397,8 @@ void Foam::demCloud::computeForces
         Uf_,
         U_,
         settings_.implicitCoupling(),
-        smoothing_()
+        smoothing_(),
+        settings_.twoWay()  // one-way: the fluid does not take them
     );
 
     // Hand the forces to the back end (engine order) for the next advance

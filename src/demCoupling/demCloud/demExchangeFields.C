@@ -122,7 +122,8 @@ void Foam::demExchangeFields::update
     const List<vector>& Uf,
     const volVectorField& U,
     const bool implicit,
-    const smoothingModel& smoothing
+    const smoothingModel& smoothing,
+    const bool smoothFields
 )
 {
     const List<label>& start = weights.start();
@@ -204,7 +205,7 @@ void Foam::demExchangeFields::update
     fExchange_.correctBoundaryConditions();
     Us_.correctBoundaryConditions();
 
-    if (smoothing.active())
+    if (smoothing.active() && smoothFields)
     {
         smoothing.smooth(Ksl_);
         smoothing.smooth(KslUs_);
