@@ -512,7 +512,7 @@ output
                          blocks=ice["blocks"], porosity=ice["porosity"], shape=shape,
                          couplingDirection=direction,
                          rollingFriction=0 if rollingMu is None else rollingMu,
-                         iceThickness=ICE_THICKNESS, rhoWater=RHO_W,
+                         iceThickness=ICE_THICKNESS, rhoWater=RHO_W, rhoIce=920.0,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
     print(f"makeCase.py {size}{' openWater' if openWater else ''}: U {U:g} m/s, "

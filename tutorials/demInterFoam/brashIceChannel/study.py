@@ -42,8 +42,10 @@ ice resistance = total - open water, both over the window, the errors
 added in quadrature.
 
 Writes DIR/study.dat (one row per run, plain columns), DIR/study.md (the
-table and the differences the study asks about, for the README) and
-DIR/resistanceSpeed.png (ice resistance against towing speed).
+table and the differences the study asks about, for the README; for the
+speed sweep, the ice resistance with R/(rho_i g B H^2) and R/(0.5 rho_w U^2
+B H) and a power law R = a U^n fitted over the speeds) and
+DIR/resistanceSpeed.png (ice resistance against towing speed, with the fit).
 DIR default: study (study-test with -test).
 """
 import math
@@ -210,6 +212,9 @@ def tabulate(top, names, window):
             RiceNet=(means["Rtotal"][0] - ow[0], math.hypot(means["Rtotal"][1], ow[1])),
             openWater=ow, openWaterWindow=owWin,
             nAhead=tr["nAhead"], nTrend=tr["nTrend"], RTrend=tr["RTrend"],
+            B=float(I["hullBeam"]), H=float(I["iceThickness"]),
+            L=float(I["hullEnd"]) - float(I["stemX"]),
+            rhoW=float(I["rhoWater"]), rhoI=float(I.get("rhoIce", 920.0)),
             cpuPerSecond=cpu / end if end > 0 else float("nan")))
     if not rows:
         fail(f"no runs to tabulate in {top}")
@@ -261,11 +266,14 @@ def tabulate(top, names, window):
             md.append(f"| {other} - polyhedra | {pm(diff(other, 'polyhedra', 'Rtotal'))} |"
                       f" {pm(diff(other, 'polyhedra', 'Rice'))} |"
                       f" {pm(diff(other, 'polyhedra', 'Rfluid'))} |")
+    sweep = sorted((r for r in rows if r["shape"] == "cuboid" and r["coupling"] == "twoWay"
+                    and r["rolling"] == 0), key=lambda r: r["U"])
+    fit = speed_law(sweep) if len(sweep) >= 2 else None
+    if len(sweep) >= 2:
+        md += sweep_table(sweep, fit)
     open(os.path.join(top, "study.md"), "w").write("\n".join(md) + "\n")
     print("\n".join(md))
 
-    sweep = sorted((r for r in rows if r["shape"] == "cuboid" and r["coupling"] == "twoWay"
-                    and r["rolling"] == 0), key=lambda r: r["U"])
     if len(sweep) >= 2:
         try:
             import matplotlib
@@ -283,6 +291,10 @@ def tabulate(top, names, window):
         ax.errorbar(U, [r["openWater"][0] for r in sweep],
                     yerr=[r["openWater"][1] for r in sweep], fmt="^:", capsize=3,
                     label="open-water resistance")
+        if fit:
+            uu = [min(U) + (max(U) - min(U)) * k / 50 for k in range(51)]
+            ax.plot(uu, [fit["a"] * u ** fit["n"] for u in uu], "-", color="C0", alpha=0.4,
+                    label=f"fit R_ice ~ U^n, n = {fit['n']:.2f} +- {fit['se']:.2f}")
         ax.set_xlabel("towing speed U [m/s]")
         ax.set_ylabel("force along the flow [N]")
         ax.set_title(f"brash-ice channel, cuboid blocks, porosity {sweep[0]['porosity']:.2f}"
@@ -292,6 +304,65 @@ def tabulate(top, names, window):
         fig.tight_layout()
         fig.savefig(os.path.join(top, "resistanceSpeed.png"), dpi=120)
         print(f"study.py: {os.path.join(top, 'resistanceSpeed.png')}")
+
+
+def speed_law(sweep):
+    """Weighted least squares of ln R_ice = ln a + n ln U over the sweep
+    (weights from the standard errors of the means): a, n and the standard
+    error of n (scaled by the reduced chi-square when it exceeds 1). None when
+    a mean is not positive or fewer than two speeds."""
+    pts = [(math.log(r["U"]), math.log(r["RiceNet"][0]), r["RiceNet"][1] / r["RiceNet"][0])
+           for r in sweep if r["RiceNet"][0] > 0 and r["RiceNet"][1] > 0]
+    if len(pts) < 2 or len({p[0] for p in pts}) < 2:
+        return None
+    w = [1 / p[2] ** 2 for p in pts]
+    sw = sum(w)
+    xm = sum(wi * p[0] for wi, p in zip(w, pts)) / sw
+    ym = sum(wi * p[1] for wi, p in zip(w, pts)) / sw
+    sxx = sum(wi * (p[0] - xm) ** 2 for wi, p in zip(w, pts))
+    n = sum(wi * (p[0] - xm) * (p[1] - ym) for wi, p in zip(w, pts)) / sxx
+    lna = ym - n * xm
+    se = math.sqrt(1 / sxx)
+    dof = len(pts) - 2
+    chi2 = sum(wi * (p[1] - lna - n * p[0]) ** 2 for wi, p in zip(w, pts))
+    if dof > 0 and chi2 / dof > 1:
+        se *= math.sqrt(chi2 / dof)
+    return dict(a=math.exp(lna), n=n, se=se, chi2=chi2, dof=dof, points=len(pts))
+
+
+def sweep_table(sweep, fit):
+    """The speed sweep for study.md: the ice resistance against speed with
+    two non-dimensional forms. C_static = R/(rho_i g B H^2), the scale of the
+    rule formulas (buoyancy and friction of the ice; no speed), and C_dynamic
+    = R/(0.5 rho_w U^2 B H), a dynamic-pressure scale. One of them staying
+    constant over the sweep says which regime the ice is in (R independent
+    of U, or R ~ U^2); the fitted exponent n says the same in one number."""
+    g = 9.81
+    md = ["", "Speed sweep (cuboids, two-way): B the hull's beam, H the ice thickness;"
+          f" Fn_L = U/sqrt(g L) with the hull's length L = {sweep[0]['L']:g} m,"
+          " Fn_H = U/sqrt(g H).", "",
+          "| U [m/s] | Fn_L | Fn_H | window [s] | ice resistance [N] | R/(rho_i g B H^2)"
+          " | R/(0.5 rho_w U^2 B H) | open water [N] | ice / open water |",
+          "|---|---|---|---|---|---|---|---|---|"]
+    for r in sweep:
+        cs = r["rhoI"] * g * r["B"] * r["H"] ** 2
+        cd = 0.5 * r["rhoW"] * r["U"] ** 2 * r["B"] * r["H"]
+        R, e = r["RiceNet"]
+        md.append(f"| {r['U']:g} | {r['U'] / math.sqrt(g * r['L']):.3f} |"
+                  f" {r['U'] / math.sqrt(g * r['H']):.3f} | {r['t0']:.1f}-{r['t1']:.1f} |"
+                  f" {R:.2f} +- {e:.2f} | {R / cs:.3f} +- {e / cs:.3f} |"
+                  f" {R / cd:.3f} +- {e / cd:.3f} | {r['openWater'][0]:.2f} |"
+                  f" {R / r['openWater'][0]:.2f} |")
+    md.append("")
+    if fit:
+        md.append(f"Power law R_ice = a U^n fitted to {fit['points']} speeds (weighted by the"
+                  f" standard errors): n = {fit['n']:.2f} +- {fit['se']:.2f}, a = {fit['a']:.2f} N"
+                  f" at 1 m/s (chi-square {fit['chi2']:.2f} for {fit['dof']} degrees of freedom)."
+                  " n = 0: speed-independent (the rule formula's regime); n = 2: the ice's"
+                  " inertia and the dynamic pressure.")
+    else:
+        md.append("No power law fitted (a mean ice resistance not positive, or one speed).")
+    return md
 
 
 def main():
