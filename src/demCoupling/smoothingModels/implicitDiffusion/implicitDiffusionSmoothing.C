@@ -19,12 +19,21 @@ Foam::implicitDiffusionSmoothing::implicitDiffusionSmoothing
 )
 :
     smoothingModel(modelType, dict, mesh),
-    lengthScale_(coeffs_.get<scalar>("lengthScale"))
+    lengthScale_(coeffs_.get<scalar>("lengthScale")),
+    tolerance_(coeffs_.getOrDefault<scalar>("tolerance", defaultTolerance))
 {
     if (lengthScale_ <= 0)
     {
         FatalIOErrorInFunction(coeffs_)
             << "lengthScale must be > 0 in " << coeffs_.name()
+            << exit(FatalIOError);
+    }
+    if (!(tolerance_ > 0 && tolerance_ <= 1e-3))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry 'tolerance' " << tolerance_ << " in " << coeffs_.name()
+            << ": expected a linear-solver tolerance in (0, 1e-3]"
+            << " (default " << defaultTolerance << ")"
             << exit(FatalIOError);
     }
 }
@@ -56,13 +65,21 @@ void Foam::implicitDiffusionSmoothing::smoothField
      ==
         f
     );
-    // Linear solver: PCG/DIC to 1e-14 (the matrix is symmetric)
+    // Linear solver: PCG/DIC (the matrix is symmetric)
     dictionary solverDict;
     solverDict.add("solver", "PCG");
     solverDict.add("preconditioner", "DIC");
-    solverDict.add("tolerance", 1e-14);
+    solverDict.add("tolerance", tolerance_);
     solverDict.add("relTol", 0);
     eqn.solve(solverDict);
+
+    if (tolerance_ > defaultTolerance)
+    {
+        // Sum over cells of (A g) is sum V g (the Laplacian's rows sum to
+        // zero with zero-gradient walls and coupled interfaces), so adding
+        // the residual b - A g back makes sum V g = sum V f0 exactly
+        g.primitiveFieldRef() += eqn.residual()/mesh_.V().field();
+    }
 
     f.primitiveFieldRef() = g.primitiveField();
     f.correctBoundaryConditions();
