@@ -182,6 +182,10 @@ def main():
     # the steady window over the whole series (the function object's own
     # mean restarts with a restarted run): MSER-5 of Rtotal, as it does,
     # unless -window is given
+    if t0 is not None and (not tr or tr[-1] < t0):
+        sys.exit(f"iceSteady.py: -window {t0:g}: the window starts after the last"
+                 f" sample of {case} ({tr[-1] if tr else 0:g} s); run longer or start"
+                 " the window earlier")
     i0 = mser5(Rtot) if t0 is None else next(i for i, tt in enumerate(tr) if tt >= t0)
     t0 = tr[i0]
     ow = means.get("Rtotal", (0, 0))[0] - means.get("RiceNet", (0, 0))[0]

@@ -134,12 +134,15 @@ def info(case):
 
 
 def cpu_time(case):
-    """demInterFoam's last ExecutionTime [s] (rank 0)."""
-    t = float("nan")
+    """demInterFoam's last ExecutionTime [s] (rank 0) and the simulated time
+    it reached (a run stopped early is tabulated over what it ran)."""
+    t, reached = float("nan"), 0.0
     for line in open(os.path.join(case, "log.demInterFoam")):
         if line.startswith("ExecutionTime"):
             t = float(line.split()[2])
-    return t
+        elif line.startswith("Time = "):
+            reached = float(line.split()[2])
+    return t, reached
 
 
 def steady_means(rundir, window):
@@ -201,8 +204,7 @@ def tabulate(top, names, window):
         I = info(ice)
         means, tr = steady_means(rundir, window_start(window, float(I["speed"])))
         ow, owWin = open_water_mean(os.path.join(rundir, "openWater"), tr["t0"], tr["t1"])
-        end = float(I["end"])
-        cpu = cpu_time(ice)
+        cpu, reached = cpu_time(ice)
         rows.append(dict(
             name=name, U=float(I["speed"]), shape=I["shape"],
             rolling=float(I.get("rollingFriction", 0)),
@@ -215,7 +217,7 @@ def tabulate(top, names, window):
             B=float(I["hullBeam"]), H=float(I["iceThickness"]),
             L=float(I["hullEnd"]) - float(I["stemX"]),
             rhoW=float(I["rhoWater"]), rhoI=float(I.get("rhoIce", 920.0)),
-            cpuPerSecond=cpu / end if end > 0 else float("nan")))
+            cpuPerSecond=cpu / reached if reached > 0 else float("nan")))
     if not rows:
         fail(f"no runs to tabulate in {top}")
 
