@@ -83,6 +83,7 @@ BANNER = "Hedra tutorial: brashIceChannel (demInterFoam), written by makeCase.py
 RHO_W, NU_W = 1010.0, 1.0e-6       # the report's water
 RHO_A, NU_A = 1.2, 1.48e-5          # and air
 ICE_THICKNESS = 0.1                 # [m], blocks 0.1 m thick, plan 0.08-0.12 m
+RHO_ICE = 920.0                     # the report's ice (the builder's iceDensity, hedraIce.case)
 
 SIZES = {
     # domain min, max, water level, stem x, cell, CFD step, DEM step, contact
@@ -371,7 +372,7 @@ boundaryField
     # the 120 blocks of the default size swinging from -420 to 2300 N,
     # weight 1080 N, at each removal; README, "Ice inflow and outflow").
     t = ICE_THICKNESS
-    r = 920.0 / RHO_W
+    r = RHO_ICE / RHO_W
     zlo, zhi = zw - r * t, zw + (1 - r) * t
     y0, y1 = dmin[1], dmax[1]
     outletX = dmax[0] + 0.1      # > the largest bounding radius, 0.099 m (0.12 x 0.12 x 0.1)
@@ -512,7 +513,7 @@ output
                          blocks=ice["blocks"], porosity=ice["porosity"], shape=shape,
                          couplingDirection=direction,
                          rollingFriction=0 if rollingMu is None else rollingMu,
-                         iceThickness=ICE_THICKNESS, rhoWater=RHO_W, rhoIce=920.0,
+                         iceThickness=ICE_THICKNESS, rhoWater=RHO_W, rhoIce=RHO_ICE,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
     print(f"makeCase.py {size}{' openWater' if openWater else ''}: U {U:g} m/s, "
