@@ -2,7 +2,8 @@
 """convergence.png (gnuplot) from the fixed-cube tables of
 tests/validation/README.md: |C_d/C_d,ref - 1| against cells per edge for the
 face-on cube at Re 20 and 100 (cube faces on cell faces; open surface), the same
-with the closed surface at Re 20, 100 and 200 (its own table), and |C_a/C_a,ref - 1|
+with the closed surface at Re 20, 100 and 200 (its own table), the edge-on (45 deg)
+cube with the closed surface at Re 20 and 100 (its own table), and |C_a/C_a,ref - 1|
 for the cube (face-on) and the sphere accelerated from rest, with a first-order
 slope for comparison."""
 import os
@@ -33,9 +34,21 @@ for re_ in ("20", "100", "200"):
     series["Cd%sClosed" % re_] = []
 for line in closedTxt.splitlines():
     c = [x.strip().strip("*") for x in line.strip().strip("|").split("|")]
-    if len(c) == 10 and c[0].isdigit() and c[4] == "closed":
+    if len(c) == 10 and c[0].isdigit() and c[2] == "face-on" and c[4] == "closed":
         err = abs(float(c[6]) / float(c[7].split()[0]) - 1)
         series["Cd%sClosed" % c[1]].append((int(c[0]), err))
+# Edge-on (45 deg), closed surface: its own table
+edgeTxt = txt[txt.index("**Edge-on convergence with the closed surface**"):]
+edgeTxt = edgeTxt[:edgeTxt.index("\n\n", edgeTxt.index("|---"))]
+edgeRef = {}
+for re_ in ("20", "100"):
+    series["Cd%sEdgeOn" % re_] = []
+for line in edgeTxt.splitlines():
+    c = [x.strip().strip("*") for x in line.strip().strip("|").split("|")]
+    if len(c) == 10 and c[0].isdigit() and c[2].startswith("edge-on") and c[4] == "closed":
+        err = abs(float(c[6]) / float(c[7].split()[0]) - 1)
+        series["Cd%sEdgeOn" % c[1]].append((int(c[0]), err))
+        edgeRef[c[1]] = c[7].split()[0]
 dat = os.path.join(here, "convergence.dat")
 with open(dat, "w") as f:
     for k, v in series.items():
@@ -59,7 +72,9 @@ plot '%s' index 0 w lp pt 7 t 'C_d, cube face-on, Re 20 (ref 3.32)', \\
      '' index 4 w lp pt 6 dt 3 lc rgb 'black' t 'C_d, Re 20, closed surface (default)', \\
      '' index 5 w lp pt 4 dt 3 t 'C_d, Re 100, closed surface', \\
      '' index 6 w lp pt 8 dt 3 t 'C_d, Re 200, closed surface (ref 0.979)', \\
+     '' index 7 w lp pt 13 dt 4 t 'C_d, Re 20, edge-on, closed (ref %s)', \\
+     '' index 8 w lp pt 12 dt 4 t 'C_d, Re 100, edge-on, closed (ref %s)', \\
      0.3/x w l dt 2 t 'first order'
-""" % (os.path.join(here, "convergence.png"), dat)
+""" % (os.path.join(here, "convergence.png"), dat, edgeRef["20"], edgeRef["100"])
 subprocess.run(["gnuplot"], input=gp.encode(), check=True)
 print(open(dat).read())
