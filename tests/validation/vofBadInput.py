@@ -30,8 +30,11 @@ no crash, no hang):
                                               field would merge cells a body
                                               cuts)
  14. resolved mode, directForcing          -> couplingProperties/directForcing:
-     { closedSurface true; }                  implemented for the constant-
-                                              density solver (demIbFoam) only
+     { closedSurface true; } with PIMPLE      it needs velocityCorrection
+     velocityCorrection gradient              reconstruct (the closed surface
+                                              is available since 2026-12-06;
+                                              before, any closedSurface true
+                                              was refused here)
  15. resolved mode, refining mesh,         -> couplingProperties/refinement:
      refinement { surfaceBand 0.01; }         surfaceBand needs freeSurface yes
      without freeSurface
@@ -101,8 +104,9 @@ tests = [
             "ibRefinement"]),
     ("resolvedClosedSurface",
      "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { closedSurface true; }\n",
-     None, ["closedSurface true", "couplingProperties", "directForcing",
-            "constant-density solver (demIbFoam) only"]),
+     "velocityCorrectionGradient",
+     ["closedSurface true", "couplingProperties", "directForcing",
+      "needs PIMPLE velocityCorrection reconstruct", "it is 'gradient'"]),
     ("resolvedSurfaceBand",
      "couplingMode resolved;\ndemBackend polyDEM;\nrefinement { band 5e-3; surfaceBand 0.01; }\n",
      "refineAroundBodies", ["surfaceBand", "couplingProperties", "refinement",
@@ -129,6 +133,10 @@ for name, coupling, change, expect in tests:
         vc.refine_at_surface(case)
     elif change == "refineAroundBodies":
         vc.refine_around_bodies(case)
+    elif change == "velocityCorrectionGradient":
+        p = os.path.join(case, "system/fvSolution")
+        txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradient;")
+        open(p, "w").write(txt)
     elif change == "velocityCorrection":
         p = os.path.join(case, "system/fvSolution")
         txt = open(p).read().replace("PIMPLE\n{", "PIMPLE\n{\n    velocityCorrection gradients;")

@@ -82,9 +82,20 @@ ATOL = 1e-6
 # plunge's impact: -2.1e-5 and -1.2e-15)
 LIMITER_ITER = 20
 
+# -closed: directForcing { closedSurface true; } (rigid flux through the
+# full cells' faces, demInterFoam pEqn.H; CTest
+# validation.vofResolvedClosedSurface): the rest case (1.) and the 920 kg/m3
+# cube of 2. and 3. only. Not in it: the 500 kg/m3 cube, whose heave decays
+# to only 65 % of its first quarter's amplitude (the open surface: 20 %; not
+# met with the closed surface, not understood, docs/models.md), and the
+# water entry of 4. and 5.
+CLOSED = "-closed" in sys.argv
+
+
 def make(name, rho_b, zb0, end, write, open_top=True):
     return vc.resolved_cube(name, rho_b, XC, zb0, H, LO, HI, N, LEVEL, end, DT, write,
-                            open_top=open_top, limiter_iter=LIMITER_ITER)
+                            open_top=open_top, limiter_iter=LIMITER_ITER,
+                            closed_surface=CLOSED)
 
 
 read_forces = vc.read_ib_forces
@@ -130,6 +141,8 @@ print(f"{'PASS' if ok else 'FAIL'}: rest: fluid force on the cube (forces.dat FD
 # 2., 3. Released off the draft
 END = 1.0
 densities = (500, 700, 920) if "-all" in sys.argv else (500, 920)
+if CLOSED and "-all" not in sys.argv:
+    densities = (920,)
 table, cases = [], []
 def tilt(q):
     """Angle [deg] between the cube's nearest body axis and the vertical."""
@@ -206,41 +219,43 @@ for rho_b in densities:
 
 # 4. Water entry: the 700 kg/m3 cube dropped through the surface
 RHO_ENTRY, ENTRY_END = 700, 0.8
+ENTRY = not CLOSED or "-all" in sys.argv
 D = draft(RHO_ENTRY)
-case = make("vofResolvedEntry", RHO_ENTRY, LEVEL + 0.002, ENTRY_END, ENTRY_END)
-# The submerged volume after the plunge is printed, not checked: not met,
-# -4.1 % at 0.8 s (-4.8 % over 1.0-1.6 s of a longer run) against 3 %, with
-# the cube turned about 50 deg (docs/models.md: 9 % of its weight is
-# carried on average by the forcing of its slanted faces' cells; not
-# understood)
-rows = check_floating("entry", RHO_ENTRY, case, results, table, archimedes=False)
-zMin = min(r[1] for r in rows)
-ok = zMin - H / 2 < LEVEL - D - 0.1 * H
-results.append(ok)
-print(f"{'PASS' if ok else 'FAIL'}: entry: the cube plunged below its draft (lowest bottom"
-      f" {1e3*(zMin - H/2):.2f} mm, draft level {1e3*(LEVEL - D):.2f} mm, at least 0.1 H below it)")
-cases.append((RHO_ENTRY, case))
-
-# 5. The same plunge in a closed tank (0.4 s): the flux balance of the water
-# (resolvedWaterFlux.H) has no fixed-pressure boundary to take the
-# sub-sampled solid volume's changes; its reference cell, the one with the
-# least water, does
-case = make("vofResolvedEntryClosed", RHO_ENTRY, LEVEL + 0.002, 0.4, 0.4, open_top=False)
-water = vc.read_water(case)
-W0 = water[0][1]
-drift = max(abs(r[1] - W0) for r in water)
-out = sum(r[6] for r in water)
-aMin = min(r[2] for r in water)
-aMax = max(r[3] for r in water)
-for ok, msg in [
-    (drift <= WTOL * W0 and out == 0.0,
-     f"closed tank: water max |W - W0| = {drift:.3g} m3 = {drift/W0:.3g} of the water"
-     f" (tolerance {WTOL:g}; out through the walls {out:g})"),
-    (aMin >= -ATOL and aMax <= 1 + ATOL,
-     f"closed tank: alpha in [{aMin:.3g}, 1 + {aMax - 1:.3g}] over the run (tolerance {ATOL:g})"),
-]:
+if ENTRY:
+    case = make("vofResolvedEntry", RHO_ENTRY, LEVEL + 0.002, ENTRY_END, ENTRY_END)
+    # The submerged volume after the plunge is printed, not checked: not met,
+    # -4.1 % at 0.8 s (-4.8 % over 1.0-1.6 s of a longer run) against 3 %, with
+    # the cube turned about 50 deg (docs/models.md: 9 % of its weight is
+    # carried on average by the forcing of its slanted faces' cells; not
+    # understood)
+    rows = check_floating("entry", RHO_ENTRY, case, results, table, archimedes=False)
+    zMin = min(r[1] for r in rows)
+    ok = zMin - H / 2 < LEVEL - D - 0.1 * H
     results.append(ok)
-    print(f"{'PASS' if ok else 'FAIL'}: {msg}")
+    print(f"{'PASS' if ok else 'FAIL'}: entry: the cube plunged below its draft (lowest bottom"
+          f" {1e3*(zMin - H/2):.2f} mm, draft level {1e3*(LEVEL - D):.2f} mm, at least 0.1 H below it)")
+    cases.append((RHO_ENTRY, case))
+
+    # 5. The same plunge in a closed tank (0.4 s): the flux balance of the water
+    # (resolvedWaterFlux.H) has no fixed-pressure boundary to take the
+    # sub-sampled solid volume's changes; its reference cell, the one with the
+    # least water, does
+    case = make("vofResolvedEntryClosed", RHO_ENTRY, LEVEL + 0.002, 0.4, 0.4, open_top=False)
+    water = vc.read_water(case)
+    W0 = water[0][1]
+    drift = max(abs(r[1] - W0) for r in water)
+    out = sum(r[6] for r in water)
+    aMin = min(r[2] for r in water)
+    aMax = max(r[3] for r in water)
+    for ok, msg in [
+        (drift <= WTOL * W0 and out == 0.0,
+         f"closed tank: water max |W - W0| = {drift:.3g} m3 = {drift/W0:.3g} of the water"
+         f" (tolerance {WTOL:g}; out through the walls {out:g})"),
+        (aMin >= -ATOL and aMax <= 1 + ATOL,
+         f"closed tank: alpha in [{aMin:.3g}, 1 + {aMax - 1:.3g}] over the run (tolerance {ATOL:g})"),
+    ]:
+        results.append(ok)
+        print(f"{'PASS' if ok else 'FAIL'}: {msg}")
 
 # Plot (case folder of each run: postProcessing/heave.png), if matplotlib is there
 try:

@@ -404,11 +404,13 @@ dynamicRefineFvMeshCoeffs
 
 
 def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
-                  open_top=True, limiter_iter=20, refinement=None, ranks=1):
+                  open_top=True, limiter_iter=20, refinement=None, ranks=1,
+                  closed_surface=False):
     """A cube of edge H (density rho_b, bottom at zb0, centre xy) in a tank
     of water to 'level', demInterFoam couplingMode resolved; refinement:
     None (the uniform mesh n) or the couplingProperties refinement entries
-    (e.g. "band 5e-3;"), with refine_around_bodies' dynamicMeshDict. Runs
+    (e.g. "band 5e-3;"), with refine_around_bodies' dynamicMeshDict;
+    closed_surface: directForcing { closedSurface true; }. Runs
     blockMesh and demInterFoam (ranks > 1: split in x by decomposePar, run
     with mpirun); returns the case folder."""
     case = hc.workdir(name)
@@ -420,6 +422,9 @@ def resolved_cube(name, rho_b, xy, zb0, H, lo, hi, n, level, end, dt, write,
     vof_dicts(case, end, dt, write, limiterIter=limiter_iter)
     dem_blocks(case, 1e-4, rho_b, [(xy[0], xy[1], zb0 + H / 2)], (H, H, H), (lo, hi))
     coupling = RESOLVED_CUBE_COUPLING
+    if closed_surface:
+        coupling = coupling.replace("interface penalised;",
+                                    "interface penalised;\n    closedSurface true;")
     if refinement is not None:
         refine_around_bodies(case)
         coupling += "refinement\n{\n    " + refinement + "\n}\n"

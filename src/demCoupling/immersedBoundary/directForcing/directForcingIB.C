@@ -170,13 +170,6 @@ Foam::directForcingIB::directForcingIB
             << "closedSurface true needs integralForcing true (the full"
             << " cells carry the kept forcing)" << exit(FatalIOError);
     }
-    if (closed_ && variableDensity)
-    {
-        FatalIOErrorInFunction(dict)
-            << "closedSurface true is implemented for the constant-density"
-            << " solver (demIbFoam) only; set it false (the default here) for"
-            << " the variable-density fluid" << exit(FatalIOError);
-    }
     mesh_.setFluxRequired(phiIB_.name());
     updateCellBoxes();
 }
@@ -525,8 +518,8 @@ void Foam::directForcingIB::correctVelocity
     const UList<ibBody>& bodies
 )
 {
-    // The variable-density path (7.) has no closed surface: construction
-    // with variableDensity true keeps closed_ false (and refuses it set)
+    // Closed surface (8.) in the variable-density path: the solver's
+    // pressure equation closes the full cells' faces (demInterFoam pEqn.H)
     const scalarField& r = rho.primitiveField();
     const scalarField& m = mu.primitiveField();
     const scalar nu = nu_;
