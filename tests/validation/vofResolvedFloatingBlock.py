@@ -87,8 +87,9 @@ LIMITER_ITER = 20
 # validation.vofResolvedClosedSurface): the rest case (1.) and the 920 kg/m3
 # cube of 2. and 3. only. Not in it: the 500 kg/m3 cube, whose heave decays
 # to only 65 % of its first quarter's amplitude (the open surface: 20 %; not
-# met with the closed surface, not understood, docs/models.md), and the
-# water entry of 4. and 5.
+# met with the closed surface in this narrow tank; in one twice as wide
+# both surfaces give 32-33 %, docs/models.md), and the water entry of 4.
+# and 5.
 CLOSED = "-closed" in sys.argv
 
 
