@@ -169,11 +169,17 @@ def read_water(case):
     return rows
 
 
-def dem_blocks(case, dt, density, blocks, size, tank, extra_types="", E=None):
+def dem_blocks(case, dt, density, blocks, size, tank, extra_types="", E=None,
+               orientations=None):
     """demProperties for boxes of the given size (x y z) placed by 'blocks'
-    (list of centre positions), in a tank of planes tank = (lo, hi)."""
+    (list of centre positions), in a tank of planes tank = (lo, hi);
+    orientations: None (axis-aligned) or each block's list-insertion
+    orientation (rx ry rz) [deg]."""
     lo, hi = tank
-    plist = "\n".join(f"            {{ position ({p[0]} {p[1]} {p[2]}); }}" for p in blocks)
+    orient = [""] * len(blocks) if orientations is None else [
+        f" orientation ({o[0]} {o[1]} {o[2]});" for o in orientations]
+    plist = "\n".join(f"            {{ position ({p[0]} {p[1]} {p[2]});{o} }}"
+                      for p, o in zip(blocks, orient))
     walls = ""
     for name, (pt, nv) in {
         "floor": (lo, (0, 0, 1)), "xmin": (lo, (1, 0, 0)), "xmax": (hi, (-1, 0, 0)),

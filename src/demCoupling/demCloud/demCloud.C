@@ -264,11 +264,13 @@ void Foam::demCloud::computeForces
     beta_.setSize(n);
     Fcoupled_.setSize(n);
     Fparticle_.setSize(n);
+    torque_.setSize(n);
     if (n == 0)
     {
         Uf_.clear();
         submergedFraction_.clear();
         usedPlane_.clear();
+        buoyancyArm_.clear();
     }
     else
     {
@@ -310,7 +312,7 @@ void Foam::demCloud::computeForces
             (
                 particles_, volume_, shapes_, weights_,
                 fluidFraction(), settings_.twoWay(), fs.alpha1, fs.g,
-                submergedFraction_, usedPlane_
+                submergedFraction_, usedPlane_, buoyancyArm_
             );
         }
 
@@ -325,6 +327,7 @@ void Foam::demCloud::computeForces
         beta_ = 0;
         Fcoupled_ = Zero;
         Fparticle_ = Zero;
+        torque_ = Zero;
 
         const scalar pi = constant::mathematical::pi;
         forAll(cell, i)
@@ -355,6 +358,7 @@ void Foam::demCloud::computeForces
                 ps.rho = rhoMix;
                 ps.nu = muP[i]/rhoMix;
                 ps.submergedFraction = submergedFraction_[i];
+                ps.buoyancyArm = buoyancyArm_[i];
             }
 
             particleForce pf;
@@ -365,6 +369,7 @@ void Foam::demCloud::computeForces
             beta_[i] = pf.beta;
             Fcoupled_[i] = pf.Fcoupled;
             Fparticle_[i] = pf.Fparticle;
+            torque_[i] = pf.Tparticle;
         }
 
         for (forceModel& m : forces_)
@@ -377,6 +382,7 @@ void Foam::demCloud::computeForces
     allSum(beta_);
     allSum(Fcoupled_);
     allSum(Fparticle_);
+    allSum(torque_);
 
     force_.setSize(n);
     forAll(force_, i)
@@ -401,10 +407,13 @@ void Foam::demCloud::computeForces
         settings_.twoWay()  // one-way: the fluid does not take them
     );
 
-    // Hand the forces to the back end (engine order) for the next advance
+    // Hand the forces to the back end (engine order) for the next advance;
+    // the torques only when a model gave one (every rank holds the same
+    // sums), so that a LIGGGHTS script without torque transfer still runs
+    // spheres, which get none
     if (backend_.valid())
     {
-        backend_->setForces(force_, List<vector>());
+        backend_->setForces(force_, torquesToHand());
     }
 
     // Velocities of this step, for dUp/dt at the next
@@ -432,7 +441,11 @@ void Foam::demCloud::checkForcesFinite() const
     };
     forAll(force_, i)
     {
-        if (finite(force_[i]) && std::isfinite(beta_[i]))
+        if
+        (
+            finite(force_[i]) && finite(torque_[i])
+         && std::isfinite(beta_[i])
+        )
         {
             continue;
         }
@@ -450,13 +463,27 @@ void Foam::demCloud::checkForcesFinite() const
             << ", fluid velocity there " << Uf_[i] << nl
             << "    drag coefficient beta " << beta_[i]
             << " kg/s, coupled force " << Fcoupled_[i]
-            << " N, particle-only force " << Fparticle_[i] << " N" << nl
+            << " N, particle-only force " << Fparticle_[i] << " N"
+            << ", torque " << torque_[i] << " N m" << nl
             << "    force models " << models
             << " (constant/couplingProperties); usual causes: a fluid"
             << " that has blown up (Courant number), a particle outside"
             << " the mesh, or a void fraction of 0"
             << exit(FatalError);
     }
+}
+
+
+Foam::List<Foam::vector> Foam::demCloud::torquesToHand() const
+{
+    for (const vector& T : torque_)
+    {
+        if (T != vector::zero)
+        {
+            return torque_;
+        }
+    }
+    return List<vector>();
 }
 
 
@@ -646,10 +673,15 @@ void Foam::demCloud::start
     // those written with its state
     if (backend_.valid())
     {
-        List<vector> torque;
+        List<vector> torque(torquesToHand());
         backend_->start(force_, torque);
+        if (torque.size())
+        {
+            torque_ = torque;
+        }
     }
     broadcast(force_);
+    broadcast(torque_);
 }
 
 

@@ -149,6 +149,23 @@ Foam::scalar Foam::submergedVolume::fractionBelow
     scalar s
 )
 {
+    vector arm;
+    return partBelow(position, orientation, radius, shape, up, s, arm);
+}
+
+
+Foam::scalar Foam::submergedVolume::partBelow
+(
+    const point& position,
+    const tensor& orientation,
+    scalar radius,
+    const demShape* shape,
+    const vector& up,
+    scalar s,
+    vector& arm
+)
+{
+    arm = Zero;
     const scalar t = s - (up & position);
 
     if (!shape)
@@ -175,11 +192,13 @@ Foam::scalar Foam::submergedVolume::fractionBelow
     if (t <= hMin) return 0;
 
     // V = 1/3 sum_faces x_f . S_f (divergence theorem), the clipped faces
-    // plus the cap on the plane, whose area vector closes the surface
+    // plus the cap on the plane, whose area vector closes the surface.
+    // First moment M = int x dV = 1/4 oint x (x.n) dA: on a clipped face
+    // (x.S) c_f, on the cap t int_cap x dA = t (Vbelow up - sum c_f (S_f.up))
     DynamicList<point> poly, clipped;
     DynamicList<scalar> ph;
     scalar V = 0, Vbelow = 0;
-    vector Sbelow(Zero);
+    vector Sbelow(Zero), Mfaces(Zero), capMoment(Zero);
     for (const face& fc : shape->faces)
     {
         poly.clear();
@@ -195,13 +214,84 @@ Foam::scalar Foam::submergedVolume::fractionBelow
         if (clipped.size() >= 3)
         {
             const vector Sc = areaVector(clipped);
+            const scalar magSc = mag(Sc);
             Vbelow += (clipped[0] & Sc)/3;
             Sbelow += Sc;
+            if (magSc > 0)
+            {
+                // Centroid of the (convex) clipped face: its fan's triangles
+                // weighted by their areas
+                const vector nf = Sc/magSc;
+                vector cf(Zero);
+                scalar af = 0;
+                for (label k = 1; k + 1 < clipped.size(); ++k)
+                {
+                    const scalar a =
+                        0.5*(((clipped[k] - clipped[0]) ^ (clipped[k + 1] - clipped[0])) & nf);
+                    cf += a*(clipped[0] + clipped[k] + clipped[k + 1])/3;
+                    af += a;
+                }
+                cf /= max(af, VSMALL);
+                Mfaces += (clipped[0] & Sc)*cf;
+                capMoment -= cf*(Sc & up);
+            }
         }
     }
     Vbelow += ((t*up) & (-Sbelow))/3;
 
-    return V > 0 ? min(max(Vbelow/V, scalar(0)), scalar(1)) : 0;
+    if (V <= 0)
+    {
+        return 0;
+    }
+    if (Vbelow > 0)
+    {
+        capMoment += Vbelow*up;
+        arm = (Mfaces + t*capMoment)/(4*Vbelow);
+    }
+    return min(max(Vbelow/V, scalar(0)), scalar(1));
+}
+
+
+Foam::vector Foam::submergedVolume::armAtFraction
+(
+    const point& position,
+    const tensor& orientation,
+    scalar radius,
+    const demShape* shape,
+    const vector& up,
+    scalar f
+)
+{
+    if (!shape || f <= 0 || f >= 1)
+    {
+        return Zero;
+    }
+    // The plane between the lowest and the highest vertex that cuts the
+    // fraction f off the shape (fractionBelow grows with s)
+    scalar lo = GREAT, hi = -GREAT;
+    for (const point& v : shape->vertices)
+    {
+        const scalar z = up & (orientation & v);
+        lo = min(lo, z);
+        hi = max(hi, z);
+    }
+    lo += up & position;
+    hi += up & position;
+    for (label iter = 0; iter < 50; ++iter)
+    {
+        const scalar s = 0.5*(lo + hi);
+        if (fractionBelow(position, orientation, radius, shape, up, s) > f)
+        {
+            hi = s;
+        }
+        else
+        {
+            lo = s;
+        }
+    }
+    vector arm;
+    partBelow(position, orientation, radius, shape, up, 0.5*(lo + hi), arm);
+    return arm;
 }
 
 
@@ -239,7 +329,8 @@ void Foam::submergedVolume::fractions
     const volScalarField& alpha1,
     const vector& g,
     List<scalar>& f,
-    List<bool>& usedPlane
+    List<bool>& usedPlane,
+    List<vector>& arm
 )
 {
     const label n = particles.size();
@@ -262,8 +353,27 @@ void Foam::submergedVolume::fractions
 
     usedPlane.setSize(n);
     usedPlane = false;
+    arm.setSize(n);
+    arm = Zero;
+    // The arm of the cellWeights particles (the plane particles' follows
+    // from their plane below)
+    auto cellWeightsArms = [&]()
+    {
+        forAll(arm, i)
+        {
+            if (!usedPlane[i])
+            {
+                arm[i] = armAtFraction
+                (
+                    particles.position[i], particles.orientation[i],
+                    particles.radius[i], shapeOf(i), up, f[i]
+                );
+            }
+        }
+    };
     if (method_ == method::cellWeights || n == 0)
     {
+        cellWeightsArms();
         return;
     }
 
@@ -304,6 +414,7 @@ void Foam::submergedVolume::fractions
     const label np = planeParticles.size();
     if (np == 0)
     {
+        cellWeightsArms();
         return;
     }
 
@@ -408,13 +519,15 @@ void Foam::submergedVolume::fractions
         else
         {
             f[i] =
-                fractionBelow
+                partBelow
                 (
                     particles.position[i], particles.orientation[i],
-                    particles.radius[i], shapeOf(i), up, 0.5*(lo[j] + hi[j])
+                    particles.radius[i], shapeOf(i), up, 0.5*(lo[j] + hi[j]),
+                    arm[i]
                 );
         }
     }
+    cellWeightsArms();
 }
 
 

@@ -241,5 +241,9 @@ bool Foam::demBackend::readHeldForces
         T.setSize(ids.size(), Zero);
         readVectors(dir/"fluidTorques", ids, T);
     }
+    else
+    {
+        T.clear();  // held without torques: none acted
+    }
     return true;
 }

@@ -64,4 +64,7 @@ void Foam::freeSurfacePressureForce::addForce
     const scalar rhoDisplaced = fs.rho1*sf + fs.rho2*(1 - sf);
     f.Fparticle +=
         -s.Vp*dynamicGradPP_[s.index] - s.Vp*rhoDisplaced*fs.g;
+    // Righting moment: the buoyancy of the submerged part at its centroid,
+    // the emerged part's (whose arm is the opposite, weighted) folded in
+    f.Tparticle += -(fs.rho1 - fs.rho2)*sf*s.Vp*(s.buoyancyArm ^ fs.g);
 }
