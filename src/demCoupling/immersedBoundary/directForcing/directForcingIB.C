@@ -8,6 +8,10 @@
 #include "fvMatrices.H"
 #include "syncTools.H"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 Foam::directForcingIB::directForcingIB
 (
     const volVectorField& U,
@@ -19,6 +23,7 @@ Foam::directForcingIB::directForcingIB
 :
     mesh_(U.mesh()),
     nSub_(dict.getOrDefault<label>("nSubSamples", 4)),
+    exactFraction_(false),
     pressureCorrection_(dict.getOrDefault<bool>("pressureCorrection", true)),
     nCorrections_(dict.getOrDefault<label>("nCorrections", 1)),
     integral_(dict.getOrDefault<bool>("integralForcing", true)),
@@ -115,7 +120,8 @@ Foam::directForcingIB::directForcingIB
         dimensionedScalar(dimArea/dimTime, Zero),
         p.boundaryField().types()
     ),
-    solidVolume_(0)
+    solidVolume_(0),
+    solidCentroid_(mesh_.C())
 {
     if (nSub_ < 1 || nSub_ > maxSubSamples)
     {
@@ -124,6 +130,22 @@ Foam::directForcingIB::directForcingIB
             << maxSubSamples << "], not " << nSub_ << nl
             << "    (n^3 samples per interface cell: 4 is the default, 8 is"
             << " fine; more costs n^3 and gains 1/n^2)" << exit(FatalIOError);
+    }
+    {
+        const word sf(dict.getOrDefault<word>("solidFraction", "exact"));
+        if (sf == "exact")
+        {
+            exactFraction_ = true;
+        }
+        else if (sf != "subSampled")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'solidFraction' of " << dict.name() << " is "
+                << sf << ", not one of subSampled, exact" << nl
+                << "    (exact: the cell boxes clipped by the polyhedra's"
+                << " faces; spheres are sub-sampled either way)"
+                << exit(FatalIOError);
+        }
     }
     if (nCorrections_ < 1)
     {
@@ -185,6 +207,7 @@ void Foam::directForcingIB::updateCellBoxes()
     cellBody_.setSize(mesh_.nCells());
     fullCell_.setSize(mesh_.nCells());
     forcedBody_.setSize(mesh_.nCells());
+    solidCentroid_ = mesh_.C();
     forAll(cp, celli)
     {
         point lo(GREAT, GREAT, GREAT), hi(-GREAT, -GREAT, -GREAT);
@@ -200,14 +223,208 @@ void Foam::directForcingIB::updateCellBoxes()
 }
 
 
+namespace
+{
+
+using namespace Foam;
+
+//- A convex polyhedron as its faces, each a vertex loop counter-clockwise
+//  seen from outside
+typedef std::vector<std::vector<point>> polyFaces;
+
+//- Clip the convex polyhedron to n.x <= o: each face by Sutherland-Hodgman,
+//  the cut closed by the polygon of the cut points on the plane (ordered by
+//  angle about their mean, counter-clockwise seen along +n, i.e. from
+//  outside the clipped part). tol: distance counted as on the plane
+void clipConvex(polyFaces& faces, const vector& n, scalar o, scalar tol)
+{
+    polyFaces out;
+    out.reserve(faces.size() + 1);
+    std::vector<point> cut;
+    // A face lying in the plane already closes the clipped part there (a
+    // body face on a cell face): no cap on top of it
+    bool faceOnPlane = false;
+    for (const std::vector<point>& f : faces)
+    {
+        std::vector<point> g;
+        const size_t m = f.size();
+        bool allOn = true;
+        for (const point& x : f)
+        {
+            allOn = allOn && mag((n & x) - o) <= tol;
+        }
+        if (allOn)
+        {
+            faceOnPlane = true;
+            out.push_back(f);
+            continue;
+        }
+        for (size_t k = 0; k < m; ++k)
+        {
+            const point& a = f[k];
+            const point& b = f[(k + 1) % m];
+            const scalar ha = (n & a) - o;
+            const scalar hb = (n & b) - o;
+            const bool ina = ha <= tol;
+            const bool inb = hb <= tol;
+            if (ina)
+            {
+                g.push_back(a);
+                if (ha >= -tol)
+                {
+                    cut.push_back(a);
+                }
+            }
+            if (ina != inb && mag(ha - hb) > VSMALL)
+            {
+                const point x = a + (ha/(ha - hb))*(b - a);
+                g.push_back(x);
+                cut.push_back(x);
+            }
+        }
+        if (g.size() >= 3)
+        {
+            out.push_back(std::move(g));
+        }
+    }
+    if (cut.size() >= 3 && !faceOnPlane)
+    {
+        point c(Zero);
+        for (const point& x : cut)
+        {
+            c += x;
+        }
+        c /= scalar(cut.size());
+        // A basis of the plane, (e1, e2, n) right-handed
+        const vector t =
+            mag(n.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0);
+        const vector e1 = (t - (t & n)*n)/mag(t - (t & n)*n);
+        const vector e2 = n ^ e1;
+        std::sort
+        (
+            cut.begin(), cut.end(),
+            [&](const point& a, const point& b)
+            {
+                return
+                    std::atan2((a - c) & e2, (a - c) & e1)
+                  < std::atan2((b - c) & e2, (b - c) & e1);
+            }
+        );
+        out.push_back(std::move(cut));
+    }
+    faces.swap(out);
+}
+
+} // End anonymous namespace
+
+
+Foam::scalar Foam::directForcingIB::exactBoxFraction
+(
+    const point& lo,
+    const point& hi,
+    const ibBody& b,
+    point& centroid
+)
+{
+    centroid = 0.5*(lo + hi);
+    const vector span = hi - lo;
+    const scalar Vbox = span.x()*span.y()*span.z();
+    if (Vbox <= 0)
+    {
+        return 0;
+    }
+    const scalar tol = 1e-12*max(mag(span), b.radius);
+
+    // The box's faces, counter-clockwise from outside
+    auto P = [&](int i, int j, int k)
+    {
+        return point(i ? hi.x() : lo.x(), j ? hi.y() : lo.y(), k ? hi.z() : lo.z());
+    };
+    polyFaces faces
+    {
+        {P(0,0,0), P(0,0,1), P(0,1,1), P(0,1,0)},   // -x
+        {P(1,0,0), P(1,1,0), P(1,1,1), P(1,0,1)},   // +x
+        {P(0,0,0), P(1,0,0), P(1,0,1), P(0,0,1)},   // -y
+        {P(0,1,0), P(0,1,1), P(1,1,1), P(1,1,0)},   // +y
+        {P(0,0,0), P(0,1,0), P(1,1,0), P(1,0,0)},   // -z
+        {P(0,0,1), P(1,0,1), P(1,1,1), P(0,1,1)}    // +z
+    };
+
+    // The body's face planes in the world frame: n_w . x <= n_w . x_p + d.
+    // Only the planes that cut the box clip it (the clipped part stays in
+    // the box): most of a body's planes leave a cell it cuts whole
+    forAll(b.faceNormals, f)
+    {
+        const vector nw = b.orientation & b.faceNormals[f];
+        const scalar o = (nw & b.position) + b.faceOffsets[f];
+        bool anyOut = false, allOut = true;
+        for (int k = 0; k < 8; ++k)
+        {
+            const scalar h = (nw & P(k & 1, k & 2, k & 4)) - o;
+            anyOut = anyOut || h > tol;
+            allOut = allOut && h > -tol;
+        }
+        if (!anyOut)
+        {
+            continue;
+        }
+        if (allOut)
+        {
+            return 0;
+        }
+        clipConvex(faces, nw, o, tol);
+        if (faces.size() < 4)
+        {
+            return 0;
+        }
+    }
+
+    // Volume and first moment: tetrahedra from the mean vertex to the
+    // faces' fan triangles
+    point r(Zero);
+    label nv = 0;
+    for (const std::vector<point>& f : faces)
+    {
+        for (const point& x : f)
+        {
+            r += x;
+            ++nv;
+        }
+    }
+    r /= scalar(nv);
+    scalar V = 0;
+    vector M(Zero);
+    for (const std::vector<point>& f : faces)
+    {
+        for (size_t k = 1; k + 1 < f.size(); ++k)
+        {
+            const vector a = f[0] - r;
+            const vector bb = f[k] - r;
+            const vector c = f[k + 1] - r;
+            const scalar v = (a & (bb ^ c))/6;
+            V += v;
+            M += v*(a + bb + c)/4;
+        }
+    }
+    if (V <= 0)
+    {
+        return 0;
+    }
+    centroid = r + M/V;
+    return min(V/Vbox, scalar(1));
+}
+
+
 Foam::scalar Foam::directForcingIB::cellFraction
 (
     label celli,
-    const ibBody& b
+    const ibBody& b,
+    point& centroid
 ) const
 {
     const point& lo = cellMin_[celli];
     const point& hi = cellMax_[celli];
+    centroid = 0.5*(lo + hi);
 
     // All corners inside a convex body: the whole box is inside
     bool allIn = true;
@@ -226,8 +443,14 @@ Foam::scalar Foam::directForcingIB::cellFraction
         return 1;
     }
 
+    if (exactFraction_ && b.polyhedron)
+    {
+        return exactBoxFraction(lo, hi, b, centroid);
+    }
+
     const vector h = (hi - lo)/scalar(nSub_);
     label nIn = 0;
+    vector sum(Zero);
     for (label i = 0; i < nSub_; ++i)
     {
         for (label j = 0; j < nSub_; ++j)
@@ -243,9 +466,14 @@ Foam::scalar Foam::directForcingIB::cellFraction
                 if (b.inside(x))
                 {
                     ++nIn;
+                    sum += x;
                 }
             }
         }
+    }
+    if (nIn > 0)
+    {
+        centroid = sum/scalar(nIn);
     }
     return scalar(nIn)/scalar(nSub_*nSub_*nSub_);
 }
@@ -264,6 +492,7 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
     lam = 0;
     us = Zero;
     cellBody_ = -1;
+    solidCentroid_ = mesh_.C();
 
     const vectorField& C = mesh_.C();
 
@@ -292,11 +521,13 @@ void Foam::directForcingIB::update(const UList<ibBody>& bodies)
                     nearest[celli] = bi;
                 }
             }
-            const scalar f = cellFraction(celli, b);
+            point centroid;
+            const scalar f = cellFraction(celli, b, centroid);
             // Overlapping bodies (contact): the larger share owns the cell
             if (f > lam[celli])
             {
                 lam[celli] = f;
+                solidCentroid_[celli] = centroid;
                 cellBody_[celli] = bi;
                 us[celli] = b.rigidVelocity(C[celli]);
             }
@@ -564,15 +795,18 @@ void Foam::directForcingIB::bodyMomentum
     const UList<ibBody>& bodies,
     List<vector>& P,
     List<vector>& L,
-    List<scalar>& M
+    List<scalar>& M,
+    List<vector>& S
 ) const
 {
     P.setSize(bodies.size());
     L.setSize(bodies.size());
     M.setSize(bodies.size());
+    S.setSize(bodies.size());
     P = Zero;
     L = Zero;
     M = Zero;
+    S = Zero;
 
     const vectorField& C = mesh_.C();
     const scalarField& V = mesh_.V();
@@ -588,9 +822,13 @@ void Foam::directForcingIB::bodyMomentum
             continue;
         }
         const scalar m = r[celli]*lam[celli]*V[celli];
+        const vector rc = C[celli] - bodies[bi].position;
         M[bi] += m;
+        // The first moment at the solid part's centroid, not the cell's:
+        // the hydrostatic moment is a small difference of such moments
+        S[bi] += m*(solidCentroid_[celli] - bodies[bi].position);
         P[bi] += m*u[celli];
-        L[bi] += (C[celli] - bodies[bi].position) ^ (m*u[celli]);
+        L[bi] += rc ^ (m*u[celli]);
     }
 
     Pstream::listCombineGather(P, plusEqOp<vector>());
@@ -599,6 +837,8 @@ void Foam::directForcingIB::bodyMomentum
     Pstream::listCombineScatter(L);
     Pstream::listCombineGather(M, plusEqOp<scalar>());
     Pstream::listCombineScatter(M);
+    Pstream::listCombineGather(S, plusEqOp<vector>());
+    Pstream::listCombineScatter(S);
 }
 
 

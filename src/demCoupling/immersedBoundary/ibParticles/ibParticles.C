@@ -265,6 +265,7 @@ void Foam::ibParticles::evolve
     const List<vector>& F,
     const List<vector>& T,
     const List<scalar>& M,
+    const List<vector>& S,
     const vector& g,
     const List<vector>& P,
     const List<vector>& L,
@@ -279,9 +280,12 @@ void Foam::ibParticles::evolve
     {
         const ibBody& b = bodies_[i];
         // No Archimedes term: the weight of the fluid inside that the
-        // fluid equations carried is taken out, buoyancy is in F_IB
+        // fluid equations carried is taken out, buoyancy is in F_IB; so is
+        // that weight's moment about the centre, which is not zero where a
+        // free surface runs through the body (water below, air above): the
+        // hydrostatic righting moment is then in T_IB
         vector Fi = F[i] - M[i]*g;
-        vector Ti = T[i];
+        vector Ti = T[i] - (S[i] ^ g);
         if (internalFluid_ == "rigid")
         {
             Fi += M[i]*(b.velocity - previousVelocity_[i])/dt;
