@@ -38,6 +38,9 @@ no crash, no hang):
  15. resolved mode, refining mesh,         -> couplingProperties/refinement:
      refinement { surfaceBand 0.01; }         surfaceBand needs freeSurface yes
      without freeSurface
+ 16. resolved mode, directForcing          -> couplingProperties/directForcing:
+     { solidFraction exakt; }                 the valid values (subSampled
+                                              exact)
 Case: a tank of 4 x 4 x 4 cells (0.04 m), water 0.02 m deep, one floating
 block; each run must fail and its log hold the strings listed. ~10 s.
 """
@@ -114,6 +117,10 @@ tests = [
     ("resolvedRefiningMesh",
      "couplingMode resolved;\ndemBackend polyDEM;\n", "refiningMesh",
      ["field alpha.water", "dynamicMeshDict", "expected field ibRefinement"]),
+    ("resolvedSolidFraction",
+     "couplingMode resolved;\ndemBackend polyDEM;\ndirectForcing { solidFraction exakt; }\n",
+     None, ["solidFraction", "couplingProperties", "directForcing", "exakt",
+            "not one of subSampled, exact"]),
 ]
 
 results = []

@@ -271,12 +271,23 @@ def _rotation(q):
 
 
 def submerged_box_volume(centre, q, size, level):
+    """The submerged volume of _submerged_box (below)."""
+    return _submerged_box(centre, q, size, level)[0]
+
+
+def submerged_box_centroid(centre, q, size, level):
+    """Centroid of the part of the box below z = level (None if none is)."""
+    return _submerged_box(centre, q, size, level)[1]
+
+
+def _submerged_box(centre, q, size, level):
     """Exact volume of the box of edges 'size' (body frame), centred at
     'centre' and turned by the quaternion q (w, x, y, z), below the plane
     z = level: each face polygon clipped to z <= level (Sutherland-Hodgman),
     the cut closed by the polygon of the plane inside the box, volume by the
     divergence theorem (sum of the faces' signed cone volumes about the
-    centre)."""
+    centre), with its centroid (the cones' tetrahedra: each at its
+    centroid, the mean of its four corners)."""
     R = _rotation(q)
     h = [0.5 * a for a in size]
 
@@ -309,31 +320,49 @@ def submerged_box_volume(centre, q, size, level):
         if len(out) >= 3:
             clipped.append(out)
     vol = 0.0
+    mom = [0.0, 0.0, 0.0]
 
     def cone(poly):
-        # signed volume of the cone from the centre over the polygon
+        # volume of the cone from the centre over the (convex) polygon, and
+        # its first moment about the centre; both signed by the polygon's
+        # turning, the same for all of its fan's tetrahedra
         c = centre
-        v = 0.0
+        v, m = 0.0, [0.0, 0.0, 0.0]
         for k in range(1, len(poly) - 1):
             a, b, d = poly[0], poly[k], poly[k + 1]
             a = [a[i] - c[i] for i in range(3)]
             b = [b[i] - c[i] for i in range(3)]
             d = [d[i] - c[i] for i in range(3)]
-            v += (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
-                  + a[2] * (b[0] * d[1] - b[1] * d[0])) / 6.0
-        return v
+            t = (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0])
+                 + a[2] * (b[0] * d[1] - b[1] * d[0])) / 6.0
+            v += t
+            for i in range(3):
+                m[i] += t * (a[i] + b[i] + d[i]) / 4.0
+        return v, m
+
+    def add(poly, sign):
+        # sign: +1 for a cone counted positive, -1 negative (abs of the
+        # polygon's own turning taken first)
+        nonlocal vol
+        v, m = cone(poly)
+        f = sign * (1 if v >= 0 else -1)
+        vol += f * v
+        for i in range(3):
+            mom[i] += f * m[i]
 
     # the box's faces face away from its centre: their cones count positive;
     # the cap faces up, towards the centre when the centre is above it
     for poly in clipped:
-        vol += abs(cone(poly))
+        add(poly, 1)
     if len(cut) >= 3:
         mx = sum(p[0] for p in cut) / len(cut)
         my = sum(p[1] for p in cut) / len(cut)
         cut.sort(key=lambda p: math.atan2(p[1] - my, p[0] - mx))
         # the cap faces up (the submerged part lies below it)
-        vol += abs(cone(cut)) * (1 if level >= centre[2] else -1)
-    return max(vol, 0.0)
+        add(cut, 1 if level >= centre[2] else -1)
+    if vol <= 0.0:
+        return 0.0, None
+    return vol, [centre[i] + mom[i] / vol for i in range(3)]
 
 
 
