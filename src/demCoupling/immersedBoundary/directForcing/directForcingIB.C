@@ -229,62 +229,104 @@ namespace
 using namespace Foam;
 
 //- A convex polyhedron as its faces, each a vertex loop counter-clockwise
-//  seen from outside
-typedef std::vector<std::vector<point>> polyFaces;
-
-//- Clip the convex polyhedron to n.x <= o: each face by Sutherland-Hodgman,
-//  the cut closed by the polygon of the cut points on the plane (ordered by
-//  angle about their mean, counter-clockwise seen along +n, i.e. from
-//  outside the clipped part). tol: distance counted as on the plane
-void clipConvex(polyFaces& faces, const vector& n, scalar o, scalar tol)
+//  seen from outside, stored flat (face f: points off[f] .. off[f+1]-1) so
+//  that clipping reuses its buffers instead of allocating per face
+struct flatPolyhedron
 {
-    polyFaces out;
-    out.reserve(faces.size() + 1);
-    std::vector<point> cut;
-    // A face lying in the plane already closes the clipped part there (a
-    // body face on a cell face): no cap on top of it
-    bool faceOnPlane = false;
-    for (const std::vector<point>& f : faces)
+    std::vector<point> p;
+    std::vector<int> off;
+
+    void clear()
     {
-        std::vector<point> g;
-        const size_t m = f.size();
+        p.clear();
+        off.assign(1, 0);
+    }
+
+    int nFaces() const
+    {
+        return int(off.size()) - 1;
+    }
+};
+
+//- A key growing monotonically with the angle of (x, y) (no atan2)
+inline scalar pseudoAngle(scalar x, scalar y)
+{
+    const scalar r = mag(x) + mag(y);
+    if (r <= 0)
+    {
+        return 0;
+    }
+    const scalar t = y/r;           // in [-1, 1]
+    return x >= 0 ? t : (y >= 0 ? 2 - t : -2 - t);
+}
+
+//- Clip the convex polyhedron 'in' to n.x <= o into 'out': each face by
+//  Sutherland-Hodgman, the cut closed by the polygon of the cut points on
+//  the plane (ordered by angle about their mean, counter-clockwise seen
+//  along +n, i.e. from outside the clipped part). tol: distance counted as
+//  on the plane. A face lying in the plane already closes the clipped part
+//  there (a body face on a cell face): no cap then
+void clipConvex
+(
+    const flatPolyhedron& in,
+    flatPolyhedron& out,
+    const vector& n,
+    scalar o,
+    scalar tol
+)
+{
+    static thread_local std::vector<point> cut;
+    static thread_local std::vector<std::pair<scalar, int>> order;
+    out.clear();
+    cut.clear();
+    bool faceOnPlane = false;
+    for (int f = 0; f < in.nFaces(); ++f)
+    {
+        const int b = in.off[f];
+        const int m = in.off[f + 1] - b;
+        const size_t start = out.p.size();
         bool allOn = true;
-        for (const point& x : f)
+        for (int k = 0; k < m; ++k)
         {
-            allOn = allOn && mag((n & x) - o) <= tol;
+            allOn = allOn && mag((n & in.p[b + k]) - o) <= tol;
         }
         if (allOn)
         {
             faceOnPlane = true;
-            out.push_back(f);
+            out.p.insert(out.p.end(), in.p.begin() + b, in.p.begin() + b + m);
+            out.off.push_back(int(out.p.size()));
             continue;
         }
-        for (size_t k = 0; k < m; ++k)
+        for (int k = 0; k < m; ++k)
         {
-            const point& a = f[k];
-            const point& b = f[(k + 1) % m];
-            const scalar ha = (n & a) - o;
-            const scalar hb = (n & b) - o;
+            const point& pa = in.p[b + k];
+            const point& pb = in.p[b + (k + 1) % m];
+            const scalar ha = (n & pa) - o;
+            const scalar hb = (n & pb) - o;
             const bool ina = ha <= tol;
             const bool inb = hb <= tol;
             if (ina)
             {
-                g.push_back(a);
+                out.p.push_back(pa);
                 if (ha >= -tol)
                 {
-                    cut.push_back(a);
+                    cut.push_back(pa);
                 }
             }
             if (ina != inb && mag(ha - hb) > VSMALL)
             {
-                const point x = a + (ha/(ha - hb))*(b - a);
-                g.push_back(x);
+                const point x = pa + (ha/(ha - hb))*(pb - pa);
+                out.p.push_back(x);
                 cut.push_back(x);
             }
         }
-        if (g.size() >= 3)
+        if (out.p.size() - start >= 3)
         {
-            out.push_back(std::move(g));
+            out.off.push_back(int(out.p.size()));
+        }
+        else
+        {
+            out.p.resize(start);
         }
     }
     if (cut.size() >= 3 && !faceOnPlane)
@@ -300,19 +342,19 @@ void clipConvex(polyFaces& faces, const vector& n, scalar o, scalar tol)
             mag(n.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0);
         const vector e1 = (t - (t & n)*n)/mag(t - (t & n)*n);
         const vector e2 = n ^ e1;
-        std::sort
-        (
-            cut.begin(), cut.end(),
-            [&](const point& a, const point& b)
-            {
-                return
-                    std::atan2((a - c) & e2, (a - c) & e1)
-                  < std::atan2((b - c) & e2, (b - c) & e1);
-            }
-        );
-        out.push_back(std::move(cut));
+        order.clear();
+        for (size_t k = 0; k < cut.size(); ++k)
+        {
+            const vector d = cut[k] - c;
+            order.emplace_back(pseudoAngle(d & e1, d & e2), int(k));
+        }
+        std::sort(order.begin(), order.end());
+        for (const auto& ok : order)
+        {
+            out.p.push_back(cut[ok.second]);
+        }
+        out.off.push_back(int(out.p.size()));
     }
-    faces.swap(out);
 }
 
 } // End anonymous namespace
@@ -340,15 +382,19 @@ Foam::scalar Foam::directForcingIB::exactBoxFraction
     {
         return point(i ? hi.x() : lo.x(), j ? hi.y() : lo.y(), k ? hi.z() : lo.z());
     };
-    polyFaces faces
+    static thread_local flatPolyhedron bufA, bufB;
+    flatPolyhedron* cur = &bufA;
+    flatPolyhedron* nxt = &bufB;
+    cur->p =
     {
-        {P(0,0,0), P(0,0,1), P(0,1,1), P(0,1,0)},   // -x
-        {P(1,0,0), P(1,1,0), P(1,1,1), P(1,0,1)},   // +x
-        {P(0,0,0), P(1,0,0), P(1,0,1), P(0,0,1)},   // -y
-        {P(0,1,0), P(0,1,1), P(1,1,1), P(1,1,0)},   // +y
-        {P(0,0,0), P(0,1,0), P(1,1,0), P(1,0,0)},   // -z
-        {P(0,0,1), P(1,0,1), P(1,1,1), P(0,1,1)}    // +z
+        P(0,0,0), P(0,0,1), P(0,1,1), P(0,1,0),   // -x
+        P(1,0,0), P(1,1,0), P(1,1,1), P(1,0,1),   // +x
+        P(0,0,0), P(1,0,0), P(1,0,1), P(0,0,1),   // -y
+        P(0,1,0), P(0,1,1), P(1,1,1), P(1,1,0),   // +y
+        P(0,0,0), P(0,1,0), P(1,1,0), P(1,0,0),   // -z
+        P(0,0,1), P(1,0,1), P(1,1,1), P(0,1,1)    // +z
     };
+    cur->off = {0, 4, 8, 12, 16, 20, 24};
 
     // The body's face planes in the world frame: n_w . x <= n_w . x_p + d.
     // Only the planes that cut the box clip it (the clipped part stays in
@@ -372,35 +418,33 @@ Foam::scalar Foam::directForcingIB::exactBoxFraction
         {
             return 0;
         }
-        clipConvex(faces, nw, o, tol);
-        if (faces.size() < 4)
+        clipConvex(*cur, *nxt, nw, o, tol);
+        std::swap(cur, nxt);
+        if (cur->nFaces() < 4)
         {
             return 0;
         }
     }
+    const flatPolyhedron& poly = *cur;
 
     // Volume and first moment: tetrahedra from the mean vertex to the
     // faces' fan triangles
     point r(Zero);
-    label nv = 0;
-    for (const std::vector<point>& f : faces)
+    for (const point& x : poly.p)
     {
-        for (const point& x : f)
-        {
-            r += x;
-            ++nv;
-        }
+        r += x;
     }
-    r /= scalar(nv);
+    r /= scalar(poly.p.size());
     scalar V = 0;
     vector M(Zero);
-    for (const std::vector<point>& f : faces)
+    for (int f = 0; f < poly.nFaces(); ++f)
     {
-        for (size_t k = 1; k + 1 < f.size(); ++k)
+        const int b0 = poly.off[f];
+        for (int k = b0 + 1; k + 1 < poly.off[f + 1]; ++k)
         {
-            const vector a = f[0] - r;
-            const vector bb = f[k] - r;
-            const vector c = f[k + 1] - r;
+            const vector a = poly.p[b0] - r;
+            const vector bb = poly.p[k] - r;
+            const vector c = poly.p[k + 1] - r;
             const scalar v = (a & (bb ^ c))/6;
             V += v;
             M += v*(a + bb + c)/4;
