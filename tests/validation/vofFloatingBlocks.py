@@ -51,15 +51,7 @@ def run_block(ratio, rho_b, method="interfacePlane"):
     vc.water_field(case, LO, HI, N, LEVEL, [box])
     vc.vof_dicts(case, END, DT, END)
     vc.dem_blocks(case, 1e-4, rho_b, [centre], (H, H, H), (LO, HI))
-    hc.coupling(case, f"""couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel exactOverlap;
-smoothingModel none;
-submergedVolume {method};
-forceModels (Gidaspow freeSurfacePressure);
-""")
+    vc.floating_block_coupling(case, method)
     hc.run("blockMesh", case, "log.blockMesh")
     hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
     rows = hc.read_summary(case)

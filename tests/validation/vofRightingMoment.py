@@ -35,13 +35,14 @@ Before 2026-12-06 freeSurfacePressure gave no moment: every heel stayed
 at 4 deg, which fails the period and the 500 kg/m3 checks.
 Arguments: -quick (interfacePlane only).
 """
-import glob
 import math
 import os
 import sys
 
 import hedracase as hc
 import vofcase as vc
+
+import demState  # noqa: E402 (tutorials/demInterFoam/common, on the path by vofcase)
 
 DX = 0.01
 LO, HI, N = (0.0, 0.0, 0.0), (0.12, 0.12, 0.10), (12, 12, 10)
@@ -87,14 +88,6 @@ def theory(rho_b, until=None):
     return s, GM, (4 * t if until is None else t), linear
 
 
-def read_state(path):
-    """quaternion (w x y z) of the one block of a polyDEM ascii state."""
-    lines = open(path).read().split("\n")
-    i = lines.index("data")
-    v = lines[i + 1].split()
-    return [float(x) for x in v[10:14]]
-
-
 def heel(q):
     """Signed heel about x [deg]: the body z axis turned towards -y."""
     R = vc._rotation(q)
@@ -112,22 +105,13 @@ def run(rho_b, method, end):
     vc.vof_dicts(case, end, DT, WRITE)
     vc.dem_blocks(case, 1e-4, rho_b, [(xc[0], xc[1], zc)], (H, H, H), (LO, HI),
                   orientations=[(PHI0, 0, 0)])
-    hc.coupling(case, f"""couplingMode unresolved;
-formulation setI;
-momentumCoupling implicit;
-locateModel hinted;
-voidFractionModel exactOverlap;
-smoothingModel none;
-submergedVolume {method};
-forceModels (Gidaspow freeSurfacePressure);
-""")
+    vc.floating_block_coupling(case, method)
     hc.run("blockMesh", case, "log.blockMesh")
     hc.run("demInterFoam", case, "log.demInterFoam", timeout=1800)
     series = []
-    for path in glob.glob(os.path.join(case, "*", "polyDEM", "state")):
-        t = float(os.path.basename(os.path.dirname(os.path.dirname(path))))
-        series.append((t, heel(read_state(path))))
-    series.sort()
+    for t, d in demState.times(case):
+        p = demState.read_state(os.path.join(case, d, "polyDEM", "state"))["particles"][0]
+        series.append((t, heel([p["qw"], p["qx"], p["qy"], p["qz"]])))
     return series
 
 

@@ -221,6 +221,21 @@ def box_walls(lo, hi):
             "ymin": (lo, (0, 1, 0)), "ymax": (hi, (0, -1, 0)), "top": (hi, (0, 0, -1))}
 
 
+def floating_block_coupling(case, method="interfacePlane"):
+    """couplingProperties of an unresolved floating block (vofFloatingBlocks,
+    vofRightingMoment): exactOverlap void fraction, Gidaspow drag and
+    freeSurfacePressure with the given submergedVolume method."""
+    hc.coupling(case, f"""couplingMode unresolved;
+formulation setI;
+momentumCoupling implicit;
+locateModel hinted;
+voidFractionModel exactOverlap;
+smoothingModel none;
+submergedVolume {method};
+forceModels (Gidaspow freeSurfacePressure);
+""")
+
+
 # Unresolved spheres falling into water (vofWaterVolume, vofAdjustTimeStep)
 SPHERES_COUPLING = """couplingMode unresolved;
 formulation setI;
