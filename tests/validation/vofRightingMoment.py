@@ -17,8 +17,8 @@ and the roll about the centre of mass obeys
     I phi'' = -(rho_w - rho_a) g V_sub GZ(phi),   I = rho_b H^5/6,
 whose period at amplitude PHI0 this script integrates (RK4; 0.13 %
 shorter than the small-angle 2 pi sqrt(I/(rho g V_sub GM)) at 4 deg). Nothing in
-the unresolved mode damps a rotation (the moment is hydrostatic; the
-drag acts at the centre), so the roll keeps its amplitude.
+this set-up damps a rotation (the moment is hydrostatic; the drag acts at
+the centre; rotationalDrag is not selected), so the roll keeps its amplitude.
 
 Checked (tolerances):
   - 920 kg/m3 (GM = +0.051 H, stable), submergedVolume interfacePlane
