@@ -21,6 +21,7 @@ that names what is wrong.
      with voidFractionModel centre) is accepted, as in OpenFOAM (the run
      must succeed and say it is unused)
  12. couplingDirection sideways -> refused, with the valid values
+ 13. solidVelocity rigid -> refused, with the valid values (centre, rigidBody)
 Each run must fail (non-zero exit) and its log contain the strings listed.
 """
 import os
@@ -65,6 +66,8 @@ tests = [
      ["adjustTimeStep", "controlDict", "demPimpleFoam"]),
     ("couplingDirection", BASE + "couplingDirection sideways;\n", 1e-5,
      ["Unknown couplingDirection 'sideways'", "twoWay", "oneWay", "couplingProperties"]),
+    ("solidVelocity", BASE + "solidVelocity rigid;\n", 1e-5,
+     ["Unknown solidVelocity 'rigid'", "centre", "rigidBody", "couplingProperties"]),
     ("CvmNegative",
      BASE.replace("pressureGradient", "pressureGradient virtualMass")
      + "virtualMassCoeffs { Cvm -0.5; }\n", 1e-5,

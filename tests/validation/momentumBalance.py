@@ -8,7 +8,10 @@ sum of the coupled fluid forces on the particles cancel to round-off.
 uses; the three locate models; laminar, RAS kEpsilon and kOmegaSST).
 Variants: setI/implicit/divided, setII/explicit/centre (all forces fed
 back), setI/implicit/divided + implicitDiffusion smoothing (the balance is
-taken before smoothing). Drag laws cycled through the variants.
+taken before smoothing). Drag laws cycled through the variants. Two more
+with `solidVelocity rigidBody` (each cell's drag on the solid's velocity
+there, Up + omega x r; the spheres turn from their contacts), implicit and
+explicit.
 Tolerance: |sum_particles + sum_fluid| / max(|.|) < 1e-12 at every step
 (written by demCloud as relErr in postProcessing/demCloud/0/summary.dat).
 """
@@ -24,9 +27,12 @@ variants = [
     ("setI", "explicit", "divided", "none", "Ganser pressureGradient", "meshSearch", "laminar"),
     ("setI", "implicit", "centre", "none", "HoelzerSommerfeld pressureGradient", "hinted", "laminar"),
     ("setI", "implicit", "divided", "none", "Gidaspow pressureGradient viscousStress", "hinted", "kOmegaSST"),
+    ("setI", "implicit", "divided", "none", "Gidaspow pressureGradient", "hinted", "laminar", "rigidBody"),
+    ("setII", "explicit", "divided", "none", "DiFelice pressureGradient", "hinted", "laminar", "rigidBody"),
 ]
 results = []
-for k, (form, mc, vf, sm, forces, loc, turb) in enumerate(variants):
+for k, (form, mc, vf, sm, forces, loc, turb, *solid) in enumerate(variants):
+    solid = solid[0] if solid else "centre"
     case = hc.workdir(f"momentum{k}")
     hc.block_mesh(case, (0, 0, 0), (0.02, 0.02, 0.04), (8, 8, 16),
                   {"walls": ("wall", ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"])})
@@ -52,6 +58,7 @@ locateModel {loc};
 momentumCoupling {mc};
 voidFractionModel {vf};
 smoothingModel {sm};
+solidVelocity {solid};
 implicitDiffusionCoeffs {{ lengthScale 0.003; }}
 forceModels ({forces});
 particleShapes {{ beads {{ sphericity 0.9; crosswiseSphericity 0.85; }} }}
@@ -63,6 +70,6 @@ particleShapes {{ beads {{ sphericity 0.9; crosswiseSphericity 0.85; }} }}
     scale = max(max(abs(x) for x in r[hc.COLS["Pc"]]) for r in rows)
     ok = worst < 1e-12 and scale > 0 and len(rows) >= 50
     results.append(ok)
-    print(f"{'PASS' if ok else 'FAIL'}: {form}/{mc}/{vf}/{sm}/{loc}/{turb}/({forces}): "
+    print(f"{'PASS' if ok else 'FAIL'}: {form}/{mc}/{vf}/{sm}/{loc}/{turb}/{solid}/({forces}): "
           f"{len(rows)} steps, largest exchanged force {scale:.3g} N, worst relErr {worst:.3g} (< 1e-12)")
 hc.finish(results)

@@ -221,11 +221,13 @@ def box_walls(lo, hi):
             "ymin": (lo, (0, 1, 0)), "ymax": (hi, (0, -1, 0)), "top": (hi, (0, 0, -1))}
 
 
-def floating_block_coupling(case, method="interfacePlane"):
+def floating_block_coupling(case, method="interfacePlane", solid="centre"):
     """couplingProperties of an unresolved floating block (vofFloatingBlocks,
     vofRightingMoment): exactOverlap void fraction, Gidaspow drag and
-    freeSurfacePressure with the given submergedVolume method."""
+    freeSurfacePressure with the given submergedVolume method; solid: the
+    solidVelocity (centre | rigidBody)."""
     hc.coupling(case, f"""couplingMode unresolved;
+solidVelocity {solid};
 formulation setI;
 momentumCoupling implicit;
 locateModel hinted;

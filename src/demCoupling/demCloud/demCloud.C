@@ -265,6 +265,10 @@ void Foam::demCloud::computeForces
     Fcoupled_.setSize(n);
     Fparticle_.setSize(n);
     torque_.setSize(n);
+
+    // solidVelocity rigidBody: each particle's mean arm sum_c w_pc (x_c - x_p)
+    // and the shift of its cells' velocities to Uf (below)
+    List<vector> meanArm, shift;
     if (n == 0)
     {
         Uf_.clear();
@@ -384,15 +388,82 @@ void Foam::demCloud::computeForces
     allSum(Fparticle_);
     allSum(torque_);
 
+    // solidVelocity rigidBody: the drag of each cell acts on the solid's
+    // velocity there, Up + omega x r (r = x_c - x_p), with the cell's own
+    // fluid velocity U_c shifted by dU = Uf - sum_c w U_c (so that its mean
+    // is the Uf the force models saw); summed over the cells this is the
+    // drag at the centre less beta omega x rbar, and the torque about the
+    // centre
+    //     T = beta (sum_c w r x U_c + rbar x (dU - Up) - J omega),
+    //     rbar = sum_c w r,  J = sum_c w (|r|^2 I - r r)
+    // (a block turning in still water drives the water of its cells round
+    // with it, and pays for it)
+    const bool rigid = settings_.rigidBodySolid() && n > 0;
+    if (rigid)
+    {
+        const vectorField& C = mesh_.C().primitiveField();
+        const vectorField& Ucell = U_.primitiveField();
+        const List<label>& start = weights_.start();
+        const List<label>& cellIndex = weights_.cellIndex();
+        const List<scalar>& weight = weights_.weight();
+        meanArm.setSize(n, Zero);
+        shift = Uf_;
+        List<vector> meanU(n, Zero);
+        List<vector> armCrossU(n, Zero);
+        List<symmTensor> J(n, Zero);
+        forAll(meanArm, i)
+        {
+            for (label k = start[i]; k < start[i + 1]; ++k)
+            {
+                const label c = cellIndex[k];
+                const scalar w = weight[k];
+                const vector r = C[c] - particles_.position[i];
+                meanArm[i] += w*r;
+                meanU[i] += w*Ucell[c];
+                armCrossU[i] += w*(r ^ Ucell[c]);
+                J[i] += w*(magSqr(r)*symmTensor::I - sqr(r));
+            }
+        }
+        allSum(meanArm);
+        allSum(meanU);
+        allSum(armCrossU);
+        allSum(J);
+        forAll(torque_, i)
+        {
+            shift[i] -= meanU[i];
+            torque_[i] += beta_[i]*
+            (
+                armCrossU[i]
+              + (meanArm[i] ^ (shift[i] - particles_.velocity[i]))
+              - (J[i] & particles_.omega[i])
+            );
+        }
+    }
+
     force_.setSize(n);
     forAll(force_, i)
     {
-        const vector Fdrag = beta_[i]*(Uf_[i] - particles_.velocity[i]);
+        vector Fdrag = beta_[i]*(Uf_[i] - particles_.velocity[i]);
+        if (rigid)
+        {
+            Fdrag -= beta_[i]*(particles_.omega[i] ^ meanArm[i]);
+        }
         force_[i] = Fdrag + Fcoupled_[i] + Fparticle_[i];
     }
     checkForcesFinite();
 
     // Exchange fields with the same weights, and the momentum balance
+    autoPtr<demSolidRotation> rotation;
+    if (rigid)
+    {
+        rotation.reset
+        (
+            new demSolidRotation
+            {
+                shift, particles_.position, particles_.omega, meanArm
+            }
+        );
+    }
     exchange_.update
     (
         weights_,
@@ -404,7 +475,8 @@ void Foam::demCloud::computeForces
         U_,
         settings_.implicitCoupling(),
         smoothing_(),
-        settings_.twoWay()  // one-way: the fluid does not take them
+        settings_.twoWay(),  // one-way: the fluid does not take them
+        rotation.get()
     );
 
     // Hand the forces to the back end (engine order) for the next advance;
@@ -532,6 +604,29 @@ Foam::tmp<Foam::volScalarField> Foam::demCloud::implicitCoefficient() const
     return withoutFeedback
     (
         exchange_.implicitCoefficient(settings_.implicitCoupling()),
+        settings_.twoWay()
+    );
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::demCloud::rotationSource() const
+{
+    return withoutFeedback
+    (
+        tmp<volVectorField>::New("rotationSource", exchange_.rotationSource()),
+        settings_.twoWay()
+    );
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::demCloud::rotationSourceByRho() const
+{
+    return withoutFeedback
+    (
+        tmp<volVectorField>
+        (
+            exchange_.rotationSource()/dimensionedScalar("rho", dimDensity, rho_)
+        ),
         settings_.twoWay()
     );
 }

@@ -25,6 +25,13 @@ Foam::demCloudSettings::demCloudSettings(const dictionary& dict)
     (
         readChoice(dict, "fluidVelocity", {"flux", "cell"}, "flux") == "flux"
     ),
+    rigidBodySolid_
+    (
+        readChoice
+        (
+            dict, "solidVelocity", {"centre", "rigidBody"}, "centre"
+        ) == "rigidBody"
+    ),
     twoWay_
     (
         readChoice
@@ -38,6 +45,12 @@ Foam::demCloudSettings::demCloudSettings(const dictionary& dict)
     Info<< "    fluid velocity at the particles: "
         << (fluxVelocity_ ? "reconstruct(alphaPhi)/voidfraction" : "cell U")
         << endl;
+    if (rigidBodySolid_)
+    {
+        Info<< "    solidVelocity rigidBody: each cell's drag towards the"
+            << " particle's velocity there, Up + omega x (x_c - x_p)"
+            << endl;
+    }
     if (!twoWay_)
     {
         Info<< "    couplingDirection oneWay: the particles feel the fluid;"
@@ -189,7 +202,7 @@ void Foam::demCloudSettings::checkEntries
     DynamicList<word> valid
     (wordList({
         "demBackend", "formulation", "momentumCoupling", "fluidVelocity",
-        "couplingDirection",
+        "solidVelocity", "couplingDirection",
         "forceModels", "demStepsPerFluidStep", "particleShapes",
         "locateModel", "voidFractionModel", "smoothingModel"
     }));

@@ -52,6 +52,14 @@ Foam::demExchangeFields::demExchangeFields(const fvMesh& mesh)
         dimensionedVector(dimForce/dimVolume, Zero),
         "zeroGradient"
     ),
+    rotationSource_
+    (
+        IOobject("rotationSource", mesh_.time().timeName(), mesh_,
+            IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh_,
+        dimensionedVector(dimForce/dimVolume, Zero),
+        "zeroGradient"
+    ),
     particleMomentum_(Zero),
     fluidMomentum_(Zero)
 {
@@ -123,7 +131,8 @@ void Foam::demExchangeFields::update
     const volVectorField& U,
     const bool implicit,
     const smoothingModel& smoothing,
-    const bool smoothFields
+    const bool smoothFields,
+    const demSolidRotation* rotation
 )
 {
     const List<label>& start = weights.start();
@@ -136,40 +145,61 @@ void Foam::demExchangeFields::update
     vector particleSide(Zero);
     forAll(Up, i)
     {
-        const vector Fdrag = beta[i]*(Uf[i] - Up[i]);
+        vector Fdrag = beta[i]*(Uf[i] - Up[i]);
+        if (rotation)
+        {
+            Fdrag -= beta[i]*(rotation->omega[i] ^ rotation->meanArm[i]);
+        }
         particleSide += Fdrag + Fcoupled[i];
     }
+    const vectorField& C = mesh_.C().primitiveField();
 
     scalarField& K = Ksl_.primitiveFieldRef();
     vectorField& KU = KslUs_.primitiveFieldRef();
     vectorField& fE = fExchange_.primitiveFieldRef();
     vectorField& Us = Us_.primitiveFieldRef();
+    vectorField& rot = rotationSource_.primitiveFieldRef();
     K = 0;
     KU = Zero;
     fE = Zero;
     Us = Zero;
+    rot = Zero;
     scalarField solidV(mesh_.nCells(), scalar(0));
     forAll(Up, i)
     {
         const vector& Upi = Up[i];
-        const vector Fexp =
-            implicit
-          ? Fcoupled[i]
-          : Fcoupled[i] + beta[i]*(Uf[i] - Upi);
         for (label k = start[i]; k < start[i + 1]; ++k)
         {
             const label c = cellIndex[k];
             const scalar w = weight[k];
+
+            // The solid's velocity in this cell and the fluid velocity the
+            // drag acts on (rigidBody: the cell's own; centre: the
+            // particle's mean)
+            vector Useenk = Uf[i];
+            vector turning = Zero;
+            if (rotation)
+            {
+                turning =
+                    rotation->omega[i] ^ (C[c] - rotation->position[i]);
+                Useenk = U[c] + rotation->shift[i];
+                rot[c] += w*beta[i]*turning;
+            }
+            const vector Usk = Upi + turning;
+            const vector Fexp =
+                implicit
+              ? Fcoupled[i]
+              : Fcoupled[i] + beta[i]*(Useenk - Upi);
             K[c] += w*beta[i];
             KU[c] += w*beta[i]*Upi;
             fE[c] -= w*Fexp;
             if (implicit)
             {
                 // Deferred correction: with the implicit -Ksl U the fluid
-                // gets exactly -beta (Uf - Up) at the coupling time
-                fE[c] += w*beta[i]*(U[c] - Uf[i]);
+                // gets exactly -beta (Useen - Us) at the coupling time
+                fE[c] += w*beta[i]*(U[c] - Useenk);
             }
-            Us[c] += w*volume[i]*Upi;
+            Us[c] += w*volume[i]*Usk;
             solidV[c] += w*volume[i];
         }
     }
@@ -186,7 +216,7 @@ void Foam::demExchangeFields::update
     vector fluidSide(Zero);
     forAll(K, c)
     {
-        vector s = fE[c];
+        vector s = fE[c] + rot[c];
         if (implicit)
         {
             s += KU[c] - K[c]*U[c];
@@ -200,6 +230,8 @@ void Foam::demExchangeFields::update
     K /= V;
     KU /= V;
     fE /= V;
+    rot /= V;
+    rotationSource_.correctBoundaryConditions();
     Ksl_.correctBoundaryConditions();
     KslUs_.correctBoundaryConditions();
     fExchange_.correctBoundaryConditions();
@@ -210,6 +242,10 @@ void Foam::demExchangeFields::update
         smoothing.smooth(Ksl_);
         smoothing.smooth(KslUs_);
         smoothing.smooth(fExchange_);
+        if (rotation)
+        {
+            smoothing.smooth(rotationSource_);
+        }
     }
 }
 
