@@ -21,9 +21,22 @@ Foam::demCloudSettings::demCloudSettings(const dictionary& dict)
             dict, "momentumCoupling", {"implicit", "explicit"}, "implicit"
         ) == "implicit"
     ),
+    // With solidVelocity rigidBody the cell velocities are the default:
+    // the flux reconstruction over the void fraction is poor cell by cell
+    // where the void fraction jumps (inside a block at alphaMin), and with
+    // it the per-cell drag fed a floating slab's heave (docs/models.md)
     fluxVelocity_
     (
-        readChoice(dict, "fluidVelocity", {"flux", "cell"}, "flux") == "flux"
+        readChoice
+        (
+            dict, "fluidVelocity", {"flux", "cell"},
+            readChoice
+            (
+                dict, "solidVelocity", {"centre", "rigidBody"}, "centre"
+            ) == "rigidBody"
+          ? "cell"
+          : "flux"
+        ) == "flux"
     ),
     rigidBodySolid_
     (
