@@ -159,6 +159,36 @@ output {{ format ascii; vtk false; }}
     foamfile(os.path.join(case, "constant/demProperties"), "demProperties", body)
 
 
+def couette_case(case, h, L, n, gamma, nu, rho):
+    """Plane Couette flow without gravity: walls at y = -h and +h moving at
+    -gamma h and +gamma h along x, cyclic in x and z (periods L), n cells;
+    the fluid starts with the steady profile u = gamma y at the cell centres
+    (mesh, schemes, transport and fields; controlDict and the particles are
+    the caller's)."""
+    block_mesh(case, (0, -h, 0), (L, h, L), n, {
+        "top": ("wall", ["ymax"]), "bottom": ("wall", ["ymin"]),
+        "left": ("cyclic; neighbourPatch right", ["xmin"]),
+        "right": ("cyclic; neighbourPatch left", ["xmax"]),
+        "front": ("cyclic; neighbourPatch back", ["zmin"]),
+        "back": ("cyclic; neighbourPatch front", ["zmax"])})
+    schemes_solution(case)
+    transport(case, nu, rho, g=(0, 0, 0))
+    Uw = gamma * h
+    cyc = {k: "type cyclic;" for k in ("left", "right", "front", "back")}
+    fields(case, dict(cyc, top=f"type fixedValue; value uniform ({Uw} 0 0);",
+                      bottom=f"type fixedValue; value uniform ({-Uw} 0 0);"),
+           dict(cyc, top="type fixedFluxPressure;", bottom="type fixedFluxPressure;"))
+    dy = 2 * h / n[1]
+    cells = [f"({gamma * (-h + (j + 0.5) * dy):.12g} 0 0)"
+             for k in range(n[2]) for j in range(n[1]) for i in range(n[0])]
+    upath = os.path.join(case, "0", "U")
+    txt = open(upath).read().replace(
+        "internalField uniform (0 0 0);",
+        f"internalField nonuniform List<vector> {len(cells)} (\n" + "\n".join(cells) + "\n);")
+    with open(upath, "w") as f:
+        f.write(txt)
+
+
 def random_fill(name, number, lo, hi, velocity=(0, 0, 0), seed=1):
     return f"""    {name}
     {{

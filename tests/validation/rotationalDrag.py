@@ -44,6 +44,11 @@ import vofcase as vc  # noqa: F401 (puts tutorials/demInterFoam/common on the pa
 import demState
 
 NOG = (0.0, 0.0, 0.0)
+COUPLING = """formulation setI;
+momentumCoupling implicit;
+voidFractionModel divided;
+forceModels (rotationalDrag);
+"""
 
 
 def list_particle(position, omega):
@@ -75,11 +80,7 @@ def quiescent_case(name, box, n, nu, rho, rhoP, d, omega0, end, dt, write, demDt
     c = (0.5 * box + 1.3e-4, 0.5 * box - 0.7e-4, 0.5 * box + 0.4e-4)
     hc.dem_properties(case, demDt, rhoP, d, {"floor": ((0, 0, 0), (0, 0, 1))},
                       list_particle(c, (0, 0, omega0)), E=5e4, gravity=NOG)
-    hc.coupling(case, """formulation setI;
-momentumCoupling implicit;
-voidFractionModel divided;
-forceModels (rotationalDrag);
-""")
+    hc.coupling(case, COUPLING)
     hc.run("blockMesh", case, "log.blockMesh")
     hc.run("demPimpleFoam", case, "log.demPimpleFoam")
     return spin_series(case)
@@ -155,36 +156,12 @@ gamma = Uw / h
 tau = rho * d * d / (60 * rho * nu)
 case = hc.workdir("rotationalDrag-shear")
 L, n = 0.02, (4, 8, 4)
-hc.block_mesh(case, (0, -h, 0), (L, h, L), n, {
-    "top": ("wall", ["ymax"]), "bottom": ("wall", ["ymin"]),
-    "left": ("cyclic; neighbourPatch right", ["xmin"]),
-    "right": ("cyclic; neighbourPatch left", ["xmax"]),
-    "front": ("cyclic; neighbourPatch back", ["zmin"]),
-    "back": ("cyclic; neighbourPatch front", ["zmax"])})
+hc.couette_case(case, h, L, n, gamma, nu, rho)
 hc.control_dict(case, 0.1, 1e-3, 0.01)
-hc.schemes_solution(case)
-hc.transport(case, nu, rho, g=NOG)
-cyc = {k: "type cyclic;" for k in ("left", "right", "front", "back")}
-hc.fields(case, dict(cyc, top=f"type fixedValue; value uniform ({Uw} 0 0);",
-                     bottom=f"type fixedValue; value uniform ({-Uw} 0 0);"),
-          dict(cyc, top="type fixedFluxPressure;", bottom="type fixedFluxPressure;"))
-# The steady Couette profile u = gamma y at the cell centres (block order: x fastest)
-dy = 2 * h / n[1]
-cells = [f"({gamma * (-h + (j + 0.5) * dy):.12g} 0 0)"
-         for k in range(n[2]) for j in range(n[1]) for i in range(n[0])]
-upath = os.path.join(case, "0", "U")
-txt = open(upath).read().replace(
-    "internalField uniform (0 0 0);",
-    f"internalField nonuniform List<vector> {len(cells)} (\n" + "\n".join(cells) + "\n);")
-open(upath, "w").write(txt)
 c = (0.5 * L + 1.3e-4, 0.0, 0.5 * L - 0.6e-4)
 hc.dem_properties(case, 1e-4, rho, d, {"floor": ((0, -h, 0), (0, 1, 0))},
                   list_particle(c, (0, 0, 0)), E=5e3, gravity=NOG)
-hc.coupling(case, """formulation setI;
-momentumCoupling implicit;
-voidFractionModel divided;
-forceModels (rotationalDrag);
-""")
+hc.coupling(case, COUPLING)
 hc.run("blockMesh", case, "log.blockMesh")
 hc.run("demPimpleFoam", case, "log.demPimpleFoam")
 series = [(0.0, 0.0)] + spin_series(case)

@@ -54,28 +54,8 @@ END = 0.3
 def run(shape, solid, end=END, parallel=False):
     case = hc.workdir(f"solidRotation-{shape}-{solid}")
     n = (round(L / DX), round(2 * H / DX), round(L / DX))
-    hc.block_mesh(case, (0, -H, 0), (L, H, L), n, {
-        "top": ("wall", ["ymax"]), "bottom": ("wall", ["ymin"]),
-        "left": ("cyclic; neighbourPatch right", ["xmin"]),
-        "right": ("cyclic; neighbourPatch left", ["xmax"]),
-        "front": ("cyclic; neighbourPatch back", ["zmin"]),
-        "back": ("cyclic; neighbourPatch front", ["zmax"])})
+    hc.couette_case(case, H, L, n, GAMMA, NU, RHO)
     hc.control_dict(case, end, 1e-4, 0.025)
-    hc.schemes_solution(case)
-    hc.transport(case, NU, RHO, g=NOG)
-    Uw = GAMMA * H
-    cyc = {k: "type cyclic;" for k in ("left", "right", "front", "back")}
-    hc.fields(case, dict(cyc, top=f"type fixedValue; value uniform ({Uw} 0 0);",
-                         bottom=f"type fixedValue; value uniform ({-Uw} 0 0);"),
-              dict(cyc, top="type fixedFluxPressure;", bottom="type fixedFluxPressure;"))
-    # The Couette profile u = gamma y at the cell centres (x fastest)
-    cells = [f"({GAMMA * (-H + (j + 0.5) * DX):.12g} 0 0)"
-             for k in range(n[2]) for j in range(n[1]) for i in range(n[0])]
-    upath = os.path.join(case, "0", "U")
-    txt = open(upath).read().replace(
-        "internalField uniform (0 0 0);",
-        f"internalField nonuniform List<vector> {len(cells)} (\n" + "\n".join(cells) + "\n);")
-    open(upath, "w").write(txt)
     c = (L / 2, 0.0, L / 2)   # a cell vertex: the body's cells symmetric in x and y
     d = A * (6 / math.pi) ** (1 / 3) if shape == "sphere" else A
     hc.dem_properties(case, 1e-4, RHO, d, {"floor": ((0, -H, 0), (0, 1, 0))},
