@@ -18,6 +18,7 @@
 //   --warmup untimed steps first (the lattice collapses into a pile)
 // Prints key: value lines; the last is `particle-steps/s: X`.
 #include "polyDEM/System.hpp"
+#include "rockShapes.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -34,65 +35,6 @@ using namespace polydem;
 
 namespace
 {
-
-std::vector<ConvexShape> readShapes(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!in) throw Error("cannot open the shape file", path, "");
-    std::vector<ConvexShape> shapes;
-    std::string line, key;
-    while (std::getline(in, line))
-    {
-        if (line.empty() || line[0] == '#') continue;
-        std::istringstream is(line);
-        is >> key;
-        if (key == "shape")
-        {
-            shapes.emplace_back();
-            int nv, nf, ne;
-            is >> shapes.back().name >> nv >> nf >> ne;
-        }
-        else if (key == "properties")
-        {
-            ConvexShape& s = shapes.back();
-            is >> s.volume >> s.surfaceArea >> s.equivalentDiameter >> s.sphericity >> s.boundingRadius
-               >> s.inertiaPerDensity.x >> s.inertiaPerDensity.y >> s.inertiaPerDensity.z;
-        }
-        else if (key == "v")
-        {
-            Vec3 v;
-            is >> v.x >> v.y >> v.z;
-            shapes.back().vertices.push_back(v);
-        }
-        else if (key == "f")
-        {
-            ConvexShape& s = shapes.back();
-            Vec3 n;
-            double off;
-            int m;
-            is >> n.x >> n.y >> n.z >> off >> m;
-            s.faceNormals.push_back(n);
-            s.faceOffsets.push_back(off);
-            for (int j = 0; j < m; ++j)
-            {
-                int i;
-                is >> i;
-                s.faceVertex.push_back(i);
-            }
-            s.faceStart.push_back(int(s.faceVertex.size()));
-        }
-        else if (key == "e")
-        {
-            PolyhedronEdge e;
-            is >> e.a >> e.b;
-            shapes.back().edges.push_back(e);
-        }
-        if (!is && key != "shapes") throw Error("malformed line: " + line, path, "");
-    }
-    for (const auto& s : shapes) s.check();
-    if (shapes.empty()) throw Error("no shapes", path, "");
-    return shapes;
-}
 
 PlaneWall plane(const Vec3& point, const Vec3& normal, const std::string& name)
 {
@@ -148,7 +90,7 @@ int main(int argc, char** argv)
         c.contact.law = ContactLaw::overlapVolume;
         c.contact.volumetricStiffness = 4e7;
         c.contact.tangentialStiffnessRatio = 2.0 / 7.0;
-        c.shapes = readShapes(shapesFile);
+        c.shapes = bench::readShapes(shapesFile);
         double rb = 0;
         int maxFaces = 0;
         for (std::size_t k = 0; k < c.shapes.size(); ++k)

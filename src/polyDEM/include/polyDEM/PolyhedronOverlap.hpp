@@ -31,6 +31,18 @@
 // O(E_A E_B (V_A + V_B)), more than the clipping itself, which is exact and
 // returns touching = false for shapes that only the edge axes separate.
 //
+// Clipping cost: I lies in the slab S where the projections of A and B on the
+// line of centres overlap. A face that misses S is not clipped, and a face is
+// clipped only by S's two planes and the planes of those faces of the other
+// shape that reach into S: for convex B with B n S non-empty,
+// B n S = S n {half-spaces of the faces of B that meet S} (a point of S outside
+// B but inside all of those would leave B through a face that meets S). For
+// the rocks of bench/polyhedraCpu that is about 10 planes of 22 (the slab's
+// two included). A finer cull (the planes that the hull of A n S reaches)
+// halved the plane visits but cost more dot products than it saved, as did
+// sorting each face's planes into cutting, inside and outside ones first.
+// A pair that touched at its last evaluation skips the separating-axis tests.
+//
 // Walls: a plane is treated as the solid half-space below it and a wall
 // triangle as the solid prism below it (the half-space restricted to the
 // triangle's normal prism). Only the particle's faces are clipped, by the
@@ -79,7 +91,19 @@ constexpr double kOverlapTouchingVolume = 1e-14;
 namespace overlapDetail
 {
 
-constexpr int kClipBuffer = kMaxFaceVertices + kMaxPolyhedronFaces;
+//  (a clip by one plane adds at most one vertex; + 2 for the slab's planes)
+constexpr int kClipBuffer = kMaxFaceVertices + kMaxPolyhedronFaces + 2;
+
+//- Uninitialised stack storage for N Vec3. Vec3's members have default
+//  initialisers, so a plain Vec3 array is zeroed at every call: about 15 kB
+//  per polyhedron pair for the clip buffers and B's vertices, 5-10 % of the
+//  pair's time (bench/polyhedraCpu). Every element is written before it is read.
+template<int N>
+struct Vec3Scratch
+{
+    alignas(Vec3) unsigned char bytes[N * sizeof(Vec3)];
+    PD_INLINE Vec3* data() { return reinterpret_cast<Vec3*>(bytes); }
+};
 
 //- Surface integrals over the boundary of the intersection, relative to a
 //  reference point o on the intersection (the first clipped vertex)
@@ -128,11 +152,12 @@ PD_INLINE void addPolygon(BoundaryIntegrals& acc, const Vec3* poly, int n, bool 
 //- Clip the convex polygon in[0..n) by the half-spaces dot(pn[j], x) <= pd[j]
 //  (Sutherland-Hodgman). Returns the vertex count (0 if empty) and sets out to
 //  the buffer holding the result. With dropSameCoplanar, a polygon lying in a
-//  clipping plane with the same orientation as faceNormal is dropped (so that
-//  coincident faces of A and B are counted once).
+//  clipping plane of index >= firstDropPlane with the same orientation as
+//  faceNormal is dropped (so that coincident faces of A and B are counted
+//  once; the planes before firstDropPlane are not faces of a shape).
 inline PD_HD int clipPolygon(Vec3* bufA, Vec3* bufB, int n, const Vec3* pn, const double* pd,
                              int nPlanes, const Vec3& faceNormal, bool dropSameCoplanar,
-                             double tol, Vec3*& out)
+                             double tol, Vec3*& out, int firstDropPlane = 0)
 {
     Vec3* cur = bufA;
     Vec3* nxt = bufB;
@@ -149,7 +174,7 @@ inline PD_HD int clipPolygon(Vec3* bufA, Vec3* bufB, int n, const Vec3* pn, cons
         if (!anyOut)
         {
             // Inside or on: unchanged, unless the whole polygon lies in the plane
-            if (!anyIn && dropSameCoplanar && dot(pn[j], faceNormal) > 0)
+            if (!anyIn && dropSameCoplanar && j >= firstDropPlane && dot(pn[j], faceNormal) > 0)
             {
                 n = 0;
             }
@@ -185,45 +210,79 @@ inline PD_HD int clipPolygon(Vec3* bufA, Vec3* bufB, int n, const Vec3* pn, cons
     return n >= 3 ? n : 0;
 }
 
-//- Clip every face of X (vertices xv, planes of the view) by the planes of Y
-//  and add the pieces to the boundary integrals. A face whose plane Y's
-//  bounding sphere (yCentre, yRadius) lies wholly behind cannot meet Y and is
-//  skipped: in a typical contact most faces are, and clipping is the cost.
-inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron& X,
-                                  const Vec3* xv, const Vec3* xn, const Vec3* yn,
-                                  const double* yd, int nyPlanes, bool fromA, double tol,
-                                  const Vec3& yCentre, double yRadius,
-                                  const double* proj, double slabLo, double slabHi)
+//- For each face of X: does its projection range (proj: the vertices'
+//  projections on the slab's axis) meet the slab [slabLo, slabHi]?
+PD_INLINE void facesMeetingSlab(const ConvexPolyhedron& X, const double* proj, double slabLo,
+                                double slabHi, bool* meets)
 {
-    Vec3 bufA[kClipBuffer];
-    Vec3 bufB[kClipBuffer];
     for (int f = 0; f < X.nFaces; ++f)
     {
+        const int f0 = X.faceStart[f];
+        const int m = X.faceSize(f);
+        double pMin = proj[X.faceVertex[f0]], pMax = pMin;
+        for (int i = 1; i < m; ++i)
+        {
+            const double p = proj[X.faceVertex[f0 + i]];
+            pMin = p < pMin ? p : pMin;
+            pMax = p > pMax ? p : pMax;
+        }
+        meets[f] = !(pMax < slabLo || pMin > slabHi);
+    }
+}
+
+//- The planes that bound Y n slab: the slab's two (first), then the planes
+//  (yn, yd) of the faces of Y that meet the slab. Returns their count.
+PD_INLINE int planesBoundingSlabPart(const ConvexPolyhedron& Y, const Vec3* yn, const double* yd,
+                                     const bool* yMeets, const Vec3& axis, double slabLo,
+                                     double slabHi, Vec3* pn, double* pd)
+{
+    pn[0] = axis;
+    pd[0] = slabHi;
+    pn[1] = -axis;
+    pd[1] = -slabLo;
+    int n = 2;
+    for (int f = 0; f < Y.nFaces; ++f)
+    {
+        if (yMeets[f])
+        {
+            pn[n] = yn[f];
+            pd[n] = yd[f];
+            ++n;
+        }
+    }
+    return n;
+}
+
+//- Clip every face of X that meets the slab (xMeets) by the planes (pn, pd)
+//  of Y n slab (planesBoundingSlabPart) and add the pieces to the boundary
+//  integrals. A face whose plane Y's bounding sphere (yCentre, yRadius) lies
+//  wholly behind cannot meet Y and is skipped as well.
+inline PD_HD void addClippedFaces(BoundaryIntegrals& acc, const ConvexPolyhedron& X,
+                                  const Vec3* xv, const Vec3* xn, const bool* xMeets,
+                                  const Vec3* pn, const double* pd, int nPlanes, bool fromA,
+                                  double tol, const Vec3& yCentre, double yRadius)
+{
+    Vec3Scratch<kClipBuffer> scratchA, scratchB;
+    Vec3* bufA = scratchA.data();
+    Vec3* bufB = scratchB.data();
+    for (int f = 0; f < X.nFaces; ++f)
+    {
+        if (!xMeets[f])
+        {
+            continue;
+        }
         const Vec3& first = xv[X.faceVertex[X.faceStart[f]]];
         if (dot(xn[f], yCentre - first) < -(yRadius + tol))
         {
             continue;
         }
         const int m = X.faceSize(f);
-        // The intersection lies in the slab where the projections of X and Y
-        // overlap: a face wholly outside it cannot meet Y
-        double pMin = proj[X.faceVertex[X.faceStart[f]]], pMax = pMin;
-        for (int i = 1; i < m; ++i)
-        {
-            const double p = proj[X.faceVertex[X.faceStart[f] + i]];
-            pMin = p < pMin ? p : pMin;
-            pMax = p > pMax ? p : pMax;
-        }
-        if (pMax < slabLo || pMin > slabHi)
-        {
-            continue;
-        }
         for (int i = 0; i < m; ++i)
         {
             bufA[i] = xv[X.faceVertex[X.faceStart[f] + i]];
         }
         Vec3* poly = nullptr;
-        const int n = clipPolygon(bufA, bufB, m, yn, yd, nyPlanes, xn[f], !fromA, tol, poly);
+        const int n = clipPolygon(bufA, bufB, m, pn, pd, nPlanes, xn[f], !fromA, tol, poly, 2);
         if (n >= 3)
         {
             addPolygon(acc, poly, n, fromA);
@@ -266,10 +325,14 @@ PD_INLINE bool separatedAlong(const Vec3& axis, const Vec3* a, int na,
 }
 
 //- Overlap of A and B, B given by its pose in A's body frame; result in A's frame.
-//  cachedAxis (A frame, may be null) is tried first and updated.
+//  cachedAxis (A frame, may be null) is tried first and updated. With
+//  touchedBefore (the pair touched at its last evaluation, so cachedAxis is
+//  its contact normal) the separating-axis tests are skipped: they would
+//  almost always fail, and the clipping finds a separation all the same.
 inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const ConvexPolyhedron& B,
                                              const Quaternion& qB, const Vec3& posB,
-                                             Vec3* cachedAxis, bool testEdgeAxes)
+                                             Vec3* cachedAxis, bool testEdgeAxes,
+                                             bool touchedBefore = false)
 {
     OverlapResult r;
     const double rA = A.boundingRadius, rB = B.boundingRadius;
@@ -280,9 +343,12 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     const double scale = rA > rB ? rA : rB;
     const double tol = kOverlapPlaneTolerance * scale;
 
+    const bool haveAxis = cachedAxis && normSqr(*cachedAxis) > 0;
+    const bool separatingTests = !(touchedBefore && haveAxis);
+
     // The cached axis first, on each shape's own vertices: a pair that stays
     // apart is rejected before B is moved into A's frame
-    if (cachedAxis && normSqr(*cachedAxis) > 0)
+    if (separatingTests && haveAxis)
     {
         const Vec3 axisInB = rotateInverse(qB, *cachedAxis);
         if (separatedAlong(*cachedAxis, A.vertices, A.nVertices, axisInB, dot(*cachedAxis, posB),
@@ -293,8 +359,10 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     }
 
     // B in A's frame
-    Vec3 bv[kMaxPolyhedronVertices];
-    Vec3 bn[kMaxPolyhedronFaces];
+    Vec3Scratch<kMaxPolyhedronVertices> scratchBv;
+    Vec3Scratch<kMaxPolyhedronFaces> scratchBn;
+    Vec3* bv = scratchBv.data();
+    Vec3* bn = scratchBn.data();
     double bd[kMaxPolyhedronFaces];
     for (int i = 0; i < B.nVertices; ++i)
     {
@@ -307,7 +375,7 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
     }
 
     // Separating axes: faces of A, faces of B, (edges)
-    for (int f = 0; f < A.nFaces; ++f)
+    for (int f = 0; separatingTests && f < A.nFaces; ++f)
     {
         double minB = 1e300;
         for (int i = 0; i < B.nVertices; ++i)
@@ -321,7 +389,7 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
             return r;
         }
     }
-    for (int f = 0; f < B.nFaces; ++f)
+    for (int f = 0; separatingTests && f < B.nFaces; ++f)
     {
         double minA = 1e300;
         for (int i = 0; i < A.nVertices; ++i)
@@ -335,7 +403,7 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
             return r;
         }
     }
-    if (testEdgeAxes)
+    if (separatingTests && testEdgeAxes)
     {
         for (int i = 0; i < A.nEdges; ++i)
         {
@@ -357,8 +425,10 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
         }
     }
 
-    // Slab along the line of centres (any axis bounds the intersection; this
-    // one makes the slab as thin as the overlap for a typical contact)
+    // Slab along the line of centres. Any axis bounds the intersection, and
+    // the cached normal would give a thinner slab, but the result would then
+    // depend on the hint at round-off (it is reset at each neighbour rebuild,
+    // so a restart would not continue bit for bit)
     const double dCentres = norm(posB);
     const Vec3 axis = dCentres > 0 ? posB / dCentres : Vec3(0, 0, 1);
     double pa[kMaxPolyhedronVertices], pb[kMaxPolyhedronVertices];
@@ -375,13 +445,26 @@ inline PD_HD OverlapResult overlapInFrameOfA(const ConvexPolyhedron& A, const Co
         bMin = pb[i] < bMin ? pb[i] : bMin;
         bMax = pb[i] > bMax ? pb[i] : bMax;
     }
-    const double slabLo = (aMin > bMin ? aMin : bMin) - tol;
-    const double slabHi = (aMax < bMax ? aMax : bMax) + tol;
+    // Widened by 1000 tol: the slab's planes clip faces, and a vertex they make
+    // must lie clearly outside the shape plane that bounds I there (at 1 tol
+    // it would count as on it: an aligned cube pair overlapping by 1e-9 of its
+    // edge came out 1.4e-4 too large, its centroid off by 3.6e-5 of the edge)
+    const double margin = 1e3 * tol;
+    const double slabLo = (aMin > bMin ? aMin : bMin) - margin;
+    const double slabHi = (aMax < bMax ? aMax : bMax) + margin;
 
-    // Boundary of A n B: faces of A inside B, faces of B inside A
+    // Boundary of A n B: faces of A inside B n slab, faces of B inside A n slab
+    bool aMeets[kMaxPolyhedronFaces], bMeets[kMaxPolyhedronFaces];
+    facesMeetingSlab(A, pa, slabLo, slabHi, aMeets);
+    facesMeetingSlab(B, pb, slabLo, slabHi, bMeets);
+    Vec3Scratch<kMaxPolyhedronFaces + 2> scratchPn;
+    Vec3* pn = scratchPn.data();
+    double pd[kMaxPolyhedronFaces + 2];
     BoundaryIntegrals acc;
-    addClippedFaces(acc, A, A.vertices, A.faceNormals, bn, bd, B.nFaces, true, tol, posB, rB, pa, slabLo, slabHi);
-    addClippedFaces(acc, B, bv, bn, A.faceNormals, A.faceOffsets, A.nFaces, false, tol, Vec3(), rA, pb, slabLo, slabHi);
+    int nPlanes = planesBoundingSlabPart(B, bn, bd, bMeets, axis, slabLo, slabHi, pn, pd);
+    addClippedFaces(acc, A, A.vertices, A.faceNormals, aMeets, pn, pd, nPlanes, true, tol, posB, rB);
+    nPlanes = planesBoundingSlabPart(A, A.faceNormals, A.faceOffsets, aMeets, axis, slabLo, slabHi, pn, pd);
+    addClippedFaces(acc, B, bv, bn, bMeets, pn, pd, nPlanes, false, tol, Vec3(), rA);
 
     const double volume = acc.sixVolume / 6.0;
     const double minVolume = A.volume < B.volume ? A.volume : B.volume;
@@ -454,7 +537,8 @@ PD_INLINE OverlapResult halfSpaceClipOverlap
     const int nPlanes = 1 + nSide;
 
     const Vec3 c = pos - o;
-    Vec3 v[kMaxPolyhedronVertices];
+    Vec3Scratch<kMaxPolyhedronVertices> scratchV;
+    Vec3* v = scratchV.data();
     double hv[kMaxPolyhedronVertices];
     for (int i = 0; i < P.nVertices; ++i)
     {
@@ -464,8 +548,9 @@ PD_INLINE OverlapResult halfSpaceClipOverlap
 
     double volume = 0, hMoment = 0, surface = 0;
     Vec3 tMoment, twiceArea;
-    Vec3 bufA[kClipBuffer];
-    Vec3 bufB[kClipBuffer];
+    Vec3Scratch<kClipBuffer> scratchA, scratchB;
+    Vec3* bufA = scratchA.data();
+    Vec3* bufB = scratchB.data();
     for (int f = 0; f < P.nFaces; ++f)
     {
         const int f0 = P.faceStart[f];
@@ -533,14 +618,21 @@ PD_INLINE OverlapResult halfSpaceClipOverlap
 } // namespace overlapDetail
 
 
+//- polyhedronOverlap takes touchedBefore (for drivers that build against
+//  several engine versions, such as bench/polyhedraCpu/pairOverlapBench.cpp)
+#define PD_OVERLAP_HAS_TOUCHED_BEFORE 1
+
 //- Overlap of convex polyhedra A and B at poses (posA, qA), (posB, qB).
 //  separatingAxis (world frame, may be null): tried first when non-zero; set
 //  to the separating axis found, or to the contact normal when touching.
+//  touchedBefore: the pair touched when separatingAxis was set (it holds the
+//  contact normal), so the separating-axis tests are skipped.
 inline PD_HD OverlapResult polyhedronOverlap(const ConvexPolyhedron& A, const Vec3& posA,
                                              const Quaternion& qA, const ConvexPolyhedron& B,
                                              const Vec3& posB, const Quaternion& qB,
                                              Vec3* separatingAxis = nullptr,
-                                             bool testEdgeAxes = false)
+                                             bool testEdgeAxes = false,
+                                             bool touchedBefore = false)
 {
     const Quaternion qAinv = conjugate(qA);
     const Vec3 posBinA = rotate(qAinv, posB - posA);
@@ -551,7 +643,7 @@ inline PD_HD OverlapResult polyhedronOverlap(const ConvexPolyhedron& A, const Ve
         axisInA = rotate(qAinv, *separatingAxis);
     }
     const OverlapResult r = overlapDetail::overlapInFrameOfA(
-        A, B, qBinA, posBinA, separatingAxis ? &axisInA : nullptr, testEdgeAxes);
+        A, B, qBinA, posBinA, separatingAxis ? &axisInA : nullptr, testEdgeAxes, touchedBefore);
     if (separatingAxis)
     {
         *separatingAxis = rotate(qA, axisInA);

@@ -24,8 +24,10 @@ struct PairLists
     Vec3* torqueB;          //!< on body 2, where touching
     //- Polyhedron pairs (null otherwise): the axis that separated the pair at
     //  its last evaluation, or its contact normal; tried first, so a pair that
-    //  stays apart is rejected with one projection instead of the face tests.
-    //  Only a hint: the result does not depend on it. Zero = none.
+    //  stays apart is rejected with one projection instead of the face tests,
+    //  and a pair that touched (touching[k]) skips those tests. Only a hint:
+    //  the result depends on it at round-off only (the clipping slab's axis).
+    //  Zero = none.
     Vec3* separatingAxis;
     //- Energy each touching pair dissipated in the step [J] (per-pair kernel
     //  with energy flows on; null otherwise)
@@ -72,7 +74,8 @@ struct PairContact
         if constexpr (Law::volumetric)
         {
             const OverlapResult ov = pairOverlap<Kind>(p, law, a, b,
-                                                       pl.separatingAxis ? pl.separatingAxis + k : nullptr);
+                                                       pl.separatingAxis ? pl.separatingAxis + k : nullptr,
+                                                       pl.touching[k] != 0);
             if (!ov.touching)
             {
                 release(k);

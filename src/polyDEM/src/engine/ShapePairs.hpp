@@ -65,10 +65,12 @@ PD_HD inline OverlapResult sphereHalfSpaceOverlap(const Vec3& x, double r, const
 
 //- Volumetric overlap of particles a and b, normal from a to b: the one
 //  shape-pair dispatch (for Kind = SphereKind it is the sphere lens only).
-//  separatingAxis (may be null): the pair's cached axis for two polyhedra
+//  separatingAxis (may be null): the pair's cached axis for two polyhedra;
+//  touchedBefore: the pair touched at its last evaluation (the axis is its
+//  contact normal)
 template<class Kind>
 PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law, int a, int b,
-                                       Vec3* separatingAxis = nullptr)
+                                       Vec3* separatingAxis = nullptr, bool touchedBefore = false)
 {
     if constexpr (Kind::polyhedra)
     {
@@ -77,7 +79,8 @@ PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law
         if (sa >= 0 && sb >= 0)
         {
             return polyhedronOverlap(law.shapes.shape(sa), p.pos[a], p.q[a],
-                                     law.shapes.shape(sb), p.pos[b], p.q[b], separatingAxis);
+                                     law.shapes.shape(sb), p.pos[b], p.q[b], separatingAxis,
+                                     false, touchedBefore);
         }
         if (sa >= 0)
         {
@@ -92,6 +95,7 @@ PD_HD inline OverlapResult pairOverlap(const ParticleView& p, const LawView& law
         }
     }
     (void)separatingAxis;
+    (void)touchedBefore;
     return sphereSphereOverlap(p.pos[a], p.radius[a], p.pos[b], p.radius[b]);
 }
 

@@ -162,6 +162,59 @@ TEST(polyhedraOverlap, randomRocksAgainstExactIntersection)
 }
 
 
+// Shallow contacts, as in a settled pile (overlap 1e-2 to 1e-6 of the smaller
+// volume): the clipping is restricted to a thin slab and to the planes that
+// reach into it, so this is where a plane left out or a vertex made by the
+// slab would show, against CGAL's exact intersection
+TEST(polyhedraOverlap, shallowContactsAgainstExactIntersection)
+{
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<ConvexShape> rocks;
+    for (int k = 0; k < 10; ++k)
+    {
+        rocks.push_back(makeRock(0.5 + u(rng), 0.4 + 0.6 * u(rng), 0.4 + 0.6 * u(rng),
+                                 8 + int(u(rng) * 27), 2000 + k));
+    }
+    double maxVolumeError = 0, maxCentroidError = 0;
+    int pairs = 0;
+    for (const double fraction : {1e-2, 1e-4, 1e-6})
+    {
+        for (int k = 0; k < 100; ++k)
+        {
+            const ConvexShape& A = rocks[rng() % rocks.size()];
+            const ConvexShape& B = rocks[rng() % rocks.size()];
+            const Pose pa{Vec3(0, 0, 0), randomRotation(rng)};
+            const Quaternion qb = randomRotation(rng);
+            const Vec3 dir = randomDirection(rng);
+            const double target = fraction * std::min(A.volume, B.volume);
+            double lo = 0, hi = A.boundingRadius + B.boundingRadius;
+            for (int it = 0; it < 80; ++it)
+            {
+                const double mid = 0.5 * (lo + hi);
+                const double v = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), mid * dir, qb).volume;
+                (v > target ? lo : hi) = mid;
+            }
+            const Pose pb{lo * dir, qb};
+            const OverlapResult r = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q);
+            const test::ExactOverlap ref =
+                test::exactOverlap(worldVertices(A, pa.pos, pa.q), worldVertices(B, pb.pos, pb.q));
+            ASSERT_TRUE(r.touching);
+            ASSERT_GT(ref.volume, 0.5 * target);
+            ++pairs;
+            const double volumeError = std::fabs(r.volume - ref.volume) / ref.volume;
+            const double centroidError = norm(r.centroid - ref.centroid) / std::cbrt(ref.volume);
+            maxVolumeError = std::max(maxVolumeError, volumeError);
+            maxCentroidError = std::max(maxCentroidError, centroidError);
+            EXPECT_LT(volumeError, 1e-10) << "fraction " << fraction << " pair " << k;
+            EXPECT_LT(centroidError, 1e-10) << "fraction " << fraction << " pair " << k;
+        }
+    }
+    std::printf("[ polyhedra ] %d shallow contacts: max rel. volume error %.3g, max centroid "
+                "error / V^(1/3) %.3g\n", pairs, maxVolumeError, maxCentroidError);
+}
+
+
 // Separated pairs: SAT with and without a cached axis, edge axes on and off
 TEST(polyhedraOverlap, separatingAxisWarmStart)
 {
@@ -194,6 +247,43 @@ TEST(polyhedraOverlap, separatingAxisWarmStart)
         }
     }
     EXPECT_GT(separatedByCache, 0);
+}
+
+
+// A pair that touched at its last evaluation skips the separating-axis tests
+// (the engine passes touchedBefore with the cached normal): touching and
+// separated pairs, shallow and deep, must give the same result bit for bit,
+// since only the early outs differ, and a pair that has come apart must be
+// found apart by the clipping alone
+TEST(polyhedraOverlap, touchedBeforeSkipsOnlyTheEarlyOuts)
+{
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    const ConvexShape A = makeRock(1.0, 0.7, 0.6, 24, 5);
+    const ConvexShape B = makeRock(0.8, 0.5, 0.9, 18, 6);
+    int touching = 0, apart = 0;
+    for (int k = 0; k < 2000; ++k)
+    {
+        const Pose pa{Vec3(0, 0, 0), randomRotation(rng)};
+        const Pose pb{(u(rng) * (A.boundingRadius + B.boundingRadius)) * randomDirection(rng),
+                      randomRotation(rng)};
+        Vec3 axis;
+        const OverlapResult r0 = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q,
+                                                   &axis, false);
+        // As the engine does it: last step's normal, or (for a pair that has
+        // just come apart) a stale normal from a nearby pose
+        Vec3 hint = r0.touching ? r0.normal : randomDirection(rng);
+        const OverlapResult r1 = polyhedronOverlap(A.view(), pa.pos, pa.q, B.view(), pb.pos, pb.q,
+                                                   &hint, false, true);
+        ASSERT_EQ(r0.touching, r1.touching) << "pose " << k;
+        EXPECT_EQ(r0.volume, r1.volume);
+        EXPECT_EQ(r0.centroid.x, r1.centroid.x);
+        EXPECT_EQ(r0.areaVector.z, r1.areaVector.z);
+        (r0.touching ? touching : apart) += 1;
+    }
+    std::printf("[ polyhedra ] touchedBefore: %d touching, %d apart, identical\n", touching, apart);
+    EXPECT_GT(touching, 100);
+    EXPECT_GT(apart, 100);
 }
 
 
