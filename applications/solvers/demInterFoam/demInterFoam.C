@@ -103,6 +103,7 @@ Description
 #include "dynamicRefineFvMesh.H"
 #include "CMULES.H"
 #include "dropUnlimitedBoundaryCorrection.H"
+#include "couplingCorrectPhi.H"
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
 #include "CrankNicolsonDdtScheme.H"
