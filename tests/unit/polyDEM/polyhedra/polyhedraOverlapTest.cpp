@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <vector>
 
 using namespace polydem;
 
@@ -62,6 +63,20 @@ struct Pose
     Quaternion q;
 };
 
+//- n random rocks (size, elongation, flatness, 8-34 hull points; seeds
+//  firstSeed, firstSeed + 1, ...), drawn from rng
+std::vector<ConvexShape> randomRocks(int n, int firstSeed, std::mt19937_64& rng)
+{
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<ConvexShape> rocks;
+    for (int k = 0; k < n; ++k)
+    {
+        rocks.push_back(makeRock(0.5 + u(rng), 0.4 + 0.6 * u(rng), 0.4 + 0.6 * u(rng),
+                                 8 + int(u(rng) * 27), firstSeed + k));
+    }
+    return rocks;
+}
+
 } // namespace
 
 
@@ -70,12 +85,7 @@ TEST(polyhedraOverlap, randomRocksAgainstExactIntersection)
 {
     std::mt19937_64 rng(2024);
     std::uniform_real_distribution<double> u(0, 1);
-    std::vector<ConvexShape> rocks;
-    for (int k = 0; k < 40; ++k)
-    {
-        rocks.push_back(makeRock(0.5 + u(rng), 0.4 + 0.6 * u(rng), 0.4 + 0.6 * u(rng),
-                                 8 + int(u(rng) * 27), 1000 + k));
-    }
+    const std::vector<ConvexShape> rocks = randomRocks(40, 1000, rng);
 
     double maxVolumeError = 0, maxCentroidError = 0, maxNormalError = 0, maxAreaError = 0;
     double timeOurs = 0, timeExact = 0;
@@ -170,12 +180,7 @@ TEST(polyhedraOverlap, shallowContactsAgainstExactIntersection)
 {
     std::mt19937_64 rng(77);
     std::uniform_real_distribution<double> u(0, 1);
-    std::vector<ConvexShape> rocks;
-    for (int k = 0; k < 10; ++k)
-    {
-        rocks.push_back(makeRock(0.5 + u(rng), 0.4 + 0.6 * u(rng), 0.4 + 0.6 * u(rng),
-                                 8 + int(u(rng) * 27), 2000 + k));
-    }
+    const std::vector<ConvexShape> rocks = randomRocks(10, 2000, rng);
     double maxVolumeError = 0, maxCentroidError = 0;
     int pairs = 0;
     for (const double fraction : {1e-2, 1e-4, 1e-6})
