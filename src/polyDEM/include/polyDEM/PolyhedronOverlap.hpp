@@ -37,7 +37,7 @@
 // shape that reach into S: for convex B with B n S non-empty,
 // B n S = S n {half-spaces of the faces of B that meet S} (a point of S outside
 // B but inside all of those would leave B through a face that meets S). For
-// the rocks of bench/polyhedraCpu that is about 10 planes of 22 (the slab's
+// the rocks of bench/polyhedraCpu that is about 11 planes of 22 (the slab's
 // two included). A finer cull (the planes that the hull of A n S reaches)
 // halved the plane visits but cost more dot products than it saved, as did
 // sorting each face's planes into cutting, inside and outside ones first.
@@ -96,7 +96,7 @@ constexpr int kClipBuffer = kMaxFaceVertices + kMaxPolyhedronFaces + 2;
 
 //- Uninitialised stack storage for N Vec3. Vec3's members have default
 //  initialisers, so a plain Vec3 array is zeroed at every call: about 15 kB
-//  per polyhedron pair for the clip buffers and B's vertices, 5-10 % of the
+//  per polyhedron pair for the clip buffers and B's vertices, 3-9 % of the
 //  pair's time (bench/polyhedraCpu). Every element is written before it is read.
 template<int N>
 struct Vec3Scratch
