@@ -14,6 +14,11 @@ struct PairHistory
 {
     std::int64_t idA = 0, idB = 0;
     Vec3 tangential, rolling;
+    //- Two polyhedra in contact: their last contact normal (from idA to idB).
+    //  The next evaluation clips in a slab along it, so the overlap depends
+    //  on it at round-off and a restart needs it to continue bit for bit.
+    //  Zero for spheres (and in state files of versions 1-2).
+    Vec3 normal;
 };
 
 //- Spring of a particle-wall contact. wall: plane index, or planes.size() + mesh index

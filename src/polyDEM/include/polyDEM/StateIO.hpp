@@ -3,12 +3,14 @@
 // ASCII writes every double with 17 significant digits (round-trips exactly);
 // binary writes the raw little-endian values (large systems).
 //
-// Version 2 of the file (written here) also carries, in its text header, the
+// Version 2 of the file also carries, in its text header, the
 // particle types the indices refer to (name and a checksum of the shape) and
 // ends with a checksum of every byte before it, so that a restart can refuse
 // a state whose types no longer match the input, and a damaged file is found
-// before it is run. Version 1 files (no types, no checksum) are still read;
-// StateFileInfo says what could be checked.
+// before it is run. Version 3 adds each pair's contact normal after its
+// springs (PairHistory::normal). Version 1 files (no types, no checksum) and
+// version 2 files (no normal) are still read; StateFileInfo says what could be
+// checked.
 #pragma once
 
 #include "polyDEM/Config.hpp"

@@ -201,10 +201,12 @@ struct OldPairKeys
     const int64_t* id;
     const Vec3* xi;
     const Vec3* mr;   //!< null without rolling history
+    const Vec3* axis; //!< contact normals of polyhedron pairs; null without
     int64_t* keyLo;
     int64_t* keyHi;
     Vec3* canonXi;
     Vec3* canonMr;
+    Vec3* canonAxis;
 
     PD_HD void operator()(int k) const
     {
@@ -214,6 +216,7 @@ struct OldPairKeys
         keyHi[k] = a < b ? b : a;
         canonXi[k] = sign * xi[k];
         canonMr[k] = mr ? sign * mr[k] : Vec3();
+        canonAxis[k] = axis ? sign * axis[k] : Vec3();
     }
 };
 
@@ -234,9 +237,11 @@ struct TransferPairHistory
     const int64_t* oldHi;
     const Vec3* oldXi;
     const Vec3* oldMr;
+    const Vec3* oldAxis;    //!< null without polyhedra
     int nOld;
     Vec3* xi;
     Vec3* mr;               //!< null without rolling history
+    Vec3* axis;             //!< contact normals (PairLists::separatingAxis); null without polyhedra
     unsigned char* touching;
 
     PD_HD void operator()(int k) const
@@ -261,6 +266,7 @@ struct TransferPairHistory
         const double sign = a < b ? 1.0 : -1.0;
         xi[k] = found ? sign * oldXi[first] : Vec3();
         if (mr) mr[k] = found ? sign * oldMr[first] : Vec3();
+        if (axis) axis[k] = found ? sign * oldAxis[first] : Vec3();
         touching[k] = found ? 1 : 0;
     }
 };

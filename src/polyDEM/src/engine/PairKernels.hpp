@@ -25,9 +25,10 @@ struct PairLists
     //- Polyhedron pairs (null otherwise): the axis that separated the pair at
     //  its last evaluation, or its contact normal; tried first, so a pair that
     //  stays apart is rejected with one projection instead of the face tests,
-    //  and a pair that touched (touching[k]) skips those tests. Only a hint:
-    //  the result depends on it at round-off only (the clipping slab's axis).
-    //  Zero = none.
+    //  and a pair that touched (touching[k]) skips those tests and is clipped
+    //  in a slab along it. The result depends on it at round-off, so a
+    //  touching pair's normal is kept with its springs (rebuilds, snapshots:
+    //  PairHistory::normal). Zero = none.
     Vec3* separatingAxis;
     //- Energy each touching pair dissipated in the step [J] (per-pair kernel
     //  with energy flows on; null otherwise)

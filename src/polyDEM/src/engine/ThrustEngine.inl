@@ -136,6 +136,8 @@ public:
         const auto partner = toHost(pairPartner_);
         const auto xi = toHost(pairXi_);
         const auto mr = toHost(pairMr_);
+        const auto touching = toHost(pairTouching_);
+        const auto axis = toHost(pairAxis_);
         const bool rolling = !mr.empty();
         const auto& ids = s.particles.id;
         for (int i = 0; i < n; ++i)
@@ -144,11 +146,14 @@ public:
             {
                 const int j = partner[k];
                 const Vec3 m = rolling ? mr[k] : Vec3();
-                if (normSqr(xi[k]) > 0 || normSqr(m) > 0)
+                // A touching polyhedron pair keeps its contact normal even
+                // without a spring (frictionless): the next overlap uses it
+                const Vec3 nrm = touching[k] && !axis.empty() ? axis[k] : Vec3();
+                if (normSqr(xi[k]) > 0 || normSqr(m) > 0 || normSqr(nrm) > 0)
                 {
                     // Stored as seen from the particle of smaller id
-                    if (ids[i] < ids[j]) s.pairs.push_back({ids[i], ids[j], xi[k], m});
-                    else s.pairs.push_back({ids[j], ids[i], -xi[k], -m});
+                    if (ids[i] < ids[j]) s.pairs.push_back({ids[i], ids[j], xi[k], m, nrm});
+                    else s.pairs.push_back({ids[j], ids[i], -xi[k], -m, -nrm});
                 }
             }
         }
@@ -872,10 +877,11 @@ private:
         // particles added since are appended)
         const bool rolling = law_.rolling != RollingModel::none;
         dvec<int64_t> oldLo, oldHi;
-        dvec<Vec3> oldXi, oldMr;
+        dvec<Vec3> oldXi, oldMr, oldAxis;
         int nOld = 0;
         {
             const int nPairs = int(pairPartner_.size());
+            const bool axes = nPairs > 0 && int(pairAxis_.size()) == nPairs;
             if (nPairs > 0)
             {
                 dvec<int> live(nPairs);
@@ -884,21 +890,23 @@ private:
                 nOld = int(e - live.begin());
                 live.resize(nOld);
                 dvec<int> liveOwner(nOld), livePartner(nOld);
-                dvec<Vec3> liveXi(nOld), liveMr(rolling ? nOld : 0);
+                dvec<Vec3> liveXi(nOld), liveMr(rolling ? nOld : 0), liveAxis(axes ? nOld : 0);
                 thrust::gather(thrust::device, live.begin(), live.end(), pairOwner_.begin(), liveOwner.begin());
                 thrust::gather(thrust::device, live.begin(), live.end(), pairPartner_.begin(), livePartner.begin());
                 thrust::gather(thrust::device, live.begin(), live.end(), pairXi_.begin(), liveXi.begin());
                 if (rolling) thrust::gather(thrust::device, live.begin(), live.end(), pairMr_.begin(), liveMr.begin());
+                if (axes) thrust::gather(thrust::device, live.begin(), live.end(), pairAxis_.begin(), liveAxis.begin());
                 oldLo.resize(nOld);
                 oldHi.resize(nOld);
                 oldXi.resize(nOld);
                 oldMr.resize(nOld);
+                oldAxis.resize(nOld);
                 thrust::for_each(thrust::device, first, first + nOld,
                                  OldPairKeys{ptr(liveOwner), ptr(livePartner), ptr(id_), ptr(liveXi),
-                                             rolling ? ptr(liveMr) : nullptr,
-                                             ptr(oldLo), ptr(oldHi), ptr(oldXi), ptr(oldMr)});
+                                             rolling ? ptr(liveMr) : nullptr, axes ? ptr(liveAxis) : nullptr,
+                                             ptr(oldLo), ptr(oldHi), ptr(oldXi), ptr(oldMr), ptr(oldAxis)});
                 auto keys = thrust::make_zip_iterator(thrust::make_tuple(oldLo.begin(), oldHi.begin()));
-                auto vals = thrust::make_zip_iterator(thrust::make_tuple(oldXi.begin(), oldMr.begin()));
+                auto vals = thrust::make_zip_iterator(thrust::make_tuple(oldXi.begin(), oldMr.begin(), oldAxis.begin()));
                 thrust::sort_by_key(thrust::device, keys, keys + nOld, vals);
             }
         }
@@ -966,14 +974,17 @@ private:
         pairTouching_.resize(nPairs);
         pairXi_.resize(nPairs);
         pairMr_.resize(rolling ? nPairs : 0);
+        // Polyhedra: a touching pair's contact normal goes with its springs (the
+        // overlap's slab is taken along it); the separating axes of the pairs
+        // apart start empty (they only decide early outs)
+        pairAxis_.resize(anyPolyhedra_ ? nPairs : 0);
         thrust::for_each(thrust::device, first, first + nPairs,
                          TransferPairHistory{ptr(pairOwner_), ptr(pairPartner_), ptr(id_), ptr(oldLo), ptr(oldHi),
-                                             ptr(oldXi), ptr(oldMr), nOld, ptr(pairXi_),
-                                             rolling ? ptr(pairMr_) : nullptr, ptr(pairTouching_)});
+                                             ptr(oldXi), ptr(oldMr), anyPolyhedra_ ? ptr(oldAxis) : nullptr, nOld,
+                                             ptr(pairXi_), rolling ? ptr(pairMr_) : nullptr,
+                                             anyPolyhedra_ ? ptr(pairAxis_) : nullptr, ptr(pairTouching_)});
         pairForce_.resize(nPairs);
         pairTorqueB_.resize(nPairs);
-        // Separating-axis hints start empty (they do not change results)
-        pairAxis_.assign(anyPolyhedra_ ? nPairs : 0, Vec3());
 #ifdef __CUDACC__
         pairTorqueA_.resize(nPairs);
 #endif
@@ -1032,6 +1043,7 @@ private:
             const auto partner = toHost(pairPartner_);
             auto xi = toHost(pairXi_);
             auto mr = toHost(pairMr_);
+            auto axis = toHost(pairAxis_);
             auto touching = toHost(pairTouching_);
             for (int i = 0; i < n; ++i)
                 for (int k = start[i]; k < start[i + 1]; ++k)
@@ -1043,10 +1055,12 @@ private:
                     const double sign = a < b ? 1.0 : -1.0;
                     xi[k] = sign * it->second->tangential;
                     if (rolling) mr[k] = sign * it->second->rolling;
+                    if (!axis.empty()) axis[k] = sign * it->second->normal;
                     touching[k] = 1;
                 }
             toDevice(pairXi_, xi);
             toDevice(pairMr_, mr);
+            toDevice(pairAxis_, axis);
             toDevice(pairTouching_, touching);
         }
 

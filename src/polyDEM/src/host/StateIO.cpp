@@ -14,7 +14,8 @@ namespace
 {
 
 const char* magic = "polyDEMState";
-const int version = 2;
+// 3: a pair's contact normal after its springs (PairHistory::normal)
+const int version = 3;
 
 //- The last line of a version-2 file: "checksum " + 16 hex digits + newline
 const std::size_t checksumKeyLength = 9;
@@ -210,6 +211,7 @@ void writeSnapshot
         writeInt(os, h.idB, binary);
         writeVec(os, h.tangential, binary);
         writeVec(os, h.rolling, binary);
+        writeVec(os, h.normal, binary);
         if (!binary) os << '\n';
     }
     for (const auto& h : s.walls)
@@ -285,7 +287,7 @@ Snapshot readSnapshot(const std::string& path, StateFileInfo* info)
         head >> m >> found.version >> fmt;
         if (m != magic || found.version < 1 || found.version > version || (fmt != "ascii" && fmt != "binary"))
         {
-            throw Error("not a polyDEM state file (versions 1-2, ascii or binary)", path);
+            throw Error("not a polyDEM state file (versions 1-3, ascii or binary)", path);
         }
     }
 
@@ -386,6 +388,7 @@ Snapshot readSnapshot(const std::string& path, StateFileInfo* info)
         h.idB = r.integer("pair id");
         h.tangential = r.vec("pair spring");
         h.rolling = r.vec("pair rolling spring");
+        if (ver >= 3) h.normal = r.vec("pair contact normal");
     }
     s.walls.resize(std::size_t(nwall));
     for (auto& h : s.walls)

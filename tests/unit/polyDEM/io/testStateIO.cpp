@@ -38,6 +38,7 @@ Snapshot smallState()
     h.idA = 10;
     h.idB = 11;
     h.tangential = Vec3(1e-7, 2e-7, -3e-7);
+    h.normal = Vec3(0.6, -0.8, 1e-17);
     s.pairs.push_back(h);
     return s;
 }
@@ -59,6 +60,16 @@ void spit(const std::string& f, const std::string& text)
 {
     std::ofstream os(f, std::ios::binary | std::ios::trunc);
     os << text;
+}
+
+//- An ASCII state of smallState() as versions 1-2 wrote it: the pair record
+//  without its last three numbers (the normal 0.6 -0.8 1e-17)
+void dropPairNormal(std::string& text)
+{
+    const std::string normal = " 0.59999999999999998 -0.80000000000000004 1.0000000000000001e-17";
+    const std::size_t at = text.find(normal);
+    ASSERT_NE(at, std::string::npos) << "no pair normal in\n" << text;
+    text.erase(at, normal.size());
 }
 
 //- readSnapshot throws a polydem::Error naming file whose message has what
@@ -87,7 +98,7 @@ TEST(StateIO, typesRoundTrip)
         writeSnapshot(file, smallState(), fmt, twoTypes());
         StateFileInfo info;
         const Snapshot s = readSnapshot(file, &info);
-        EXPECT_EQ(info.version, 2);
+        EXPECT_EQ(info.version, 3);
         EXPECT_TRUE(info.checksummed);
         ASSERT_EQ(info.types.size(), 2u);
         EXPECT_EQ(info.types[0].name, "beads");
@@ -97,7 +108,10 @@ TEST(StateIO, typesRoundTrip)
         ASSERT_EQ(s.particles.size(), 3u);
         EXPECT_EQ(s.particles.position[2].z, 0.3 + 1e-17);
         EXPECT_EQ(s.particles.mass[0], 1.0/3.0);
-        EXPECT_EQ(s.pairs.size(), 1u);
+        ASSERT_EQ(s.pairs.size(), 1u);
+        EXPECT_EQ(s.pairs[0].tangential.z, -3e-7);
+        EXPECT_EQ(s.pairs[0].normal.x, 0.6);
+        EXPECT_EQ(s.pairs[0].normal.z, 1e-17);
         EXPECT_FALSE(std::ifstream(file + ".tmp").good()) << "temporary file left behind";
     }
     std::remove(file.c_str());
@@ -153,8 +167,9 @@ TEST(StateIO, versionOneIsReadUnchecked)
     const std::string file = ::testing::TempDir() + "polydem_stateio_v1";
     writeSnapshot(file, smallState(), StateFormat::ascii, twoTypes());
     std::string text = slurp(file);
-    // What version 1 wrote: no type table, no checksum line
-    text.replace(text.find("polyDEMState 2"), 14, "polyDEMState 1");
+    // What version 1 wrote: no type table, no checksum line, no pair normal
+    text.replace(text.find("polyDEMState 3"), 14, "polyDEMState 1");
+    dropPairNormal(text);
     const std::size_t t0 = text.find("types ");
     const std::size_t t1 = text.find("data\n");
     text.erase(t0, t1 - t0);
@@ -166,6 +181,38 @@ TEST(StateIO, versionOneIsReadUnchecked)
     EXPECT_FALSE(info.checksummed);
     EXPECT_TRUE(info.types.empty());
     EXPECT_EQ(s.particles.size(), 3u);
+    ASSERT_EQ(s.pairs.size(), 1u);
+    EXPECT_EQ(s.pairs[0].tangential.y, 2e-7);
+    EXPECT_EQ(normSqr(s.pairs[0].normal), 0.0);
+    std::remove(file.c_str());
+}
+
+
+// Version 2 (types and checksum, no pair normal) is read, checksum included;
+// the pairs come without their normal (a restart from it continues at
+// round-off, not bit for bit, for polyhedra)
+TEST(StateIO, versionTwoIsRead)
+{
+    const std::string file = ::testing::TempDir() + "polydem_stateio_v2";
+    writeSnapshot(file, smallState(), StateFormat::ascii, twoTypes());
+    std::string text = slurp(file);
+    text.replace(text.find("polyDEMState 3"), 14, "polyDEMState 2");
+    dropPairNormal(text);
+    // the checksum of what version 2 would have written
+    text.erase(text.rfind("checksum "));
+    char line[64];
+    std::snprintf(line, sizeof line, "checksum %016llx\n",
+                  static_cast<unsigned long long>(fnv1a(text.data(), text.size())));
+    spit(file, text + line);
+    StateFileInfo info;
+    const Snapshot s = readSnapshot(file, &info);
+    EXPECT_EQ(info.version, 2);
+    EXPECT_TRUE(info.checksummed);
+    EXPECT_EQ(info.types.size(), 2u);
+    ASSERT_EQ(s.pairs.size(), 1u);
+    EXPECT_EQ(s.pairs[0].idB, 11);
+    EXPECT_EQ(s.pairs[0].tangential.x, 1e-7);
+    EXPECT_EQ(normSqr(s.pairs[0].normal), 0.0);
     std::remove(file.c_str());
 }
 
