@@ -6,7 +6,7 @@ ice flowing past it at the towing speed (hull-fixed frame).
 Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
                    [-demStep DT] [-endTime T] [-hullDraft T] [-porosity P]
                    [-shape cuboid|sphere] [-rollingFriction MU] [-oneWay]
-                   [-noOpenWaterFile] [-dir DIR]
+                   [-seed N] [-noOpenWaterFile] [-dir DIR]
 
   (default)   4 m x 1 m channel, 0.6 m water + 0.4 m air, 0.05 m cells
               (0.025 m at the free surface and the hull), ~120 blocks, 3 s
@@ -46,6 +46,11 @@ Usage: makeCase.py [-test | -full] [-openWater] [-speed U] [-stiffness K]
   -oneWay     couplingDirection oneWay: drag and buoyancy act on the ice,
               the water does not see the ice (its flow is the open-water
               run's); default two-way
+  -seed N     the ice field's random seed (a whole number >= 1, default
+              1): the channel builder's (block sizes, places, headings) is
+              N, the inflow's N + 6. Runs that differ only in N are
+              repeats of one set-up (Allrun -seed; README, "How much one
+              run says")
   -noOpenWaterFile  the ice run's iceResistance does not read the
               open-water run's mean (../openWater/...resistanceMean.dat,
               which must exist when the ice run starts); its RiceNet is
@@ -122,6 +127,7 @@ def main():
     rollingMu = None             # rolling resistance (elasticPlastic), none by default
     owFile = True                # the ice run reads the open-water run's mean
     HULL_DEPTH = 0.5             # the dummy hull's depth, keel to deck (the report's)
+    seed = 1                     # the ice field's seed: the builder's; the inflow's is seed + 6
     args = sys.argv[1:]
     while args:
         a = args.pop(0)
@@ -157,10 +163,16 @@ def main():
             owFile = False
         elif a == "-hullDraft":
             draft = number(a, args, "a draft in m")
+        elif a == "-seed":
+            v = args.pop(0) if args else ""
+            if not (v.isdigit() and int(v) >= 1):
+                sys.exit(f"makeCase.py: -seed '{v}': expected a whole number >= 1")
+            seed = int(v)
         else:
             sys.exit(f"makeCase.py: unknown option {a} "
                      "(-test | -full, -openWater, -speed U, -stiffness K, -demStep DT, -endTime T, "
-                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -rollingFriction MU, -oneWay, -noOpenWaterFile, -dir DIR)")
+                     "-hullDraft T, -porosity P, -shape cuboid|sphere, -rollingFriction MU, -oneWay, -seed N, "
+                     "-noOpenWaterFile, -dir DIR)")
     if not (0 < U < 5):
         sys.exit(f"makeCase.py: -speed {U}: expected a towing speed in (0, 5) m/s")
     P = dict(SIZES[size])
@@ -179,7 +191,7 @@ def main():
                  f"{zw - dmin[2]:g} m deep); expected T <= {zw - dmin[2] - P['cell']:g} m")
     info = makeBrashIceCase(d, full=False, domain=P["domain"], stemX=P["stemX"],
                             cellSize=P["cell"], iceThickness=ICE_THICKNESS,
-                            velocity=(U, 0.0, 0.0), snap=False, porosity=porosity, shape=shape,
+                            velocity=(U, 0.0, 0.0), snap=False, porosity=porosity, shape=shape, seed=seed,
                             bowPoints=32, hullLevels=2,
                             hullDict=f"type dummy; depth {HULL_DEPTH:g}; draft {draft:g};")
     ice = info["ice"]
@@ -424,7 +436,7 @@ boundaryField
         velocity        {Uv};
         interval        {max(4 * dt, round(Lr / U / 8 / dt) * dt):g};   // region length / U / 8
         attempts        300;
-        seed            7;
+        seed            {seed + 6};   // the builder's + 6
         approach        // kinematic at U: from upstream of the region to a radius past the inlet
         {{
             min     ({xin - R - Lr - 0.05:g} {y0 - 0.05:g} {zlo - 0.1:.6g});
@@ -514,7 +526,7 @@ output
                          cell=P["cell"], dt=dt, dtDem=dtDem, end=P["end"],
                          blocks=ice["blocks"], porosity=ice["porosity"], shape=shape,
                          couplingDirection=direction,
-                         rollingFriction=0 if rollingMu is None else rollingMu,
+                         rollingFriction=0 if rollingMu is None else rollingMu, seed=seed,
                          iceThickness=ICE_THICKNESS, rhoWater=RHO_W, rhoIce=RHO_ICE,
                          fsicrModel=info["fsicr"]["Rmodel"]).items():
             f.write(f"{k} {v}\n")
@@ -524,7 +536,8 @@ output
           f"hull draft {draft:g} m ({round(keelClearance, 9):g} m of water under the keel), "
           f"inflow solid fraction {1 - ice['porosity']:.4g}, {shape}s"
           + (f", rolling friction {rollingMu:g}" if rollingMu is not None else "")
-          + (", one-way coupling" if direction == "oneWay" else ""))
+          + (", one-way coupling" if direction == "oneWay" else "")
+          + (f", seed {seed}" if seed != 1 else ""))
 
 
 main()
