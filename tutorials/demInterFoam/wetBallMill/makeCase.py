@@ -5,16 +5,22 @@ the dry tutorial's constant/demProperties there).
 
     python3 makeCase.py [--D 3] [--L 0.2] [--endTime 16] [--steadyStart 6]
                         [--dt 2e-3] [--cells 0.1] [--fill 0.1188]
+                        [--mesh snappy|ogrid] [--meshMotion rotating|static]
 
 Writes
-  system/blockMeshDict      an O-grid of the shell's inside (../common/
-                            rotatingDrum.py): cells of about --cells m,
-                            one cell thick (the slice; front and back
-                            'empty') or, for L > 2 cells, L/cells cells
-                            along the axis with slip end walls
-  constant/dynamicMeshDict  the whole mesh turns with the shell as a solid
-                            body, 15 rpm counter-clockwise seen from +z
-                            (omega along +z, as the DEM shell's rotation)
+  system/blockMeshDict      (--mesh snappy, the default) a Cartesian
+                            background of --cells m cells and the smooth
+                            shell's STL for snappyHexMesh, or (--mesh ogrid)
+                            an O-grid of the shell's inside (../common/
+                            rotatingDrum.py); one cell thick (the slice;
+                            front and back 'empty') or, for L > 2 cells,
+                            L/cells cells along the axis with slip end walls
+  constant/dynamicMeshDict  (--meshMotion rotating, the default) the whole
+                            mesh turns with the shell as a solid body from
+                            tCouple, 15 rpm counter-clockwise seen from +z
+                            (omega along +z, as the DEM shell's rotation);
+                            --meshMotion static: the mesh stands and the
+                            shell patch is a rotatingWallVelocity
   system/setAlphaFieldDict  the slurry: a pool at the bottom holding --fill
                             of the shell's inside volume pi D^2/4 L (the
                             seed's 4 200 L in the 3 m x 5 m mill: 11.88 %),
@@ -52,9 +58,9 @@ p.add_argument("--fill", type=float, default=4.2 / (math.pi * 1.5 ** 2 * 5.0),
 p.add_argument("--writeInterval", type=float, default=1.0)
 p.add_argument("--mesh", choices=("snappy", "ogrid"), default="snappy",
                help="the fluid mesh: Cartesian cut by snappyHexMesh, or the O-grid")
-p.add_argument("--meshMotion", choices=("rotating", "static"), default="static",
-               help="the fluid mesh stands, its shell wall turning (default), or turns "
-                    "with the shell as a solid body (loses slurry: README)")
+p.add_argument("--meshMotion", choices=("rotating", "static"), default="rotating",
+               help="the fluid mesh turns with the shell as a solid body (default), or "
+                    "stands with its shell wall turning (README, 'Mesh motion')")
 p.add_argument("--smoothing", type=float, default=0.1,
                help="implicitDiffusion length of the particle fields [m] (0: none)")
 p.add_argument("--airNu", type=float, default=1.48e-5,
