@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Paired repeats of the wet lifters8 mill (README, "Mesh motion"): for each
 seed of the dry fill, the standing mesh with the turning shell wall (the
-default) and the mesh turning with the shell (-rotating), both from
+default until 2026-12-07) and the mesh turning with the shell (-rotating), both from
 `./Allrun -mill lifters8 -seed N [-rotating]`. Reads
 pairedMeshMotion_lifters8_2026-12-07.dat (the numbers of each run's
 results.md, and the energy flows of its chargeMean.dat: the fluid's work
