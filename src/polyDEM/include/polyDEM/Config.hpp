@@ -108,6 +108,9 @@ struct MeshWall
 {
     std::string name;
     TriangleMesh mesh;       //!< geometry at t = 0
+    //- Per triangle, how deep its wall solid reaches (wallDepths(mesh), set
+    //  by System; empty: the engine works it out)
+    std::vector<double> wallDepth;
     int material = 0;
     WallMotion motion;
     //- As PlaneWall::loadPoint

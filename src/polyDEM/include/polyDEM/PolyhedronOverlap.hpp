@@ -46,14 +46,19 @@
 //
 // Walls: a plane is treated as the solid half-space below it and a wall
 // triangle as the solid prism below it (the half-space restricted to the
-// triangle's normal prism). Only the particle's faces are clipped, by the
-// wall plane and the prism's side planes (halfSpaceClipOverlap); volume and
+// triangle's normal prism), down to the triangle's wall depth: half the
+// thickness of the body behind it, so that the prisms of a thin closed body
+// (a ship hull, a lifter) stop at its middle and do not come out through its
+// far side onto particles there. Only the particle's faces are clipped, by the
+// wall plane and the prism's side planes (halfSpaceClipOverlap); the floor is
+// the same clip moved down to it, taken away. Volume and
 // centroid follow from fields that vanish on the wall's own faces, so the
 // wall is never built as a polyhedron. Exact to round-off. Limit of the triangle
 // model: the volumes of a particle over several triangles add, which is exact
-// for coplanar neighbours and flat or convex meshes seen from the fluid side,
-// but counts the wedge twice at a concave edge (an inside corner of a
-// container); the normal is then the area-weighted mean of the two walls.
+// for coplanar neighbours, but at a convex edge of a closed body the two
+// faces' prisms overlap inside it (down to their floors) and count that part
+// twice, and at a concave edge (an inside corner) a wedge below both faces
+// belongs to neither; the normal is then the area-weighted mean of the walls.
 //
 // Sphere-polyhedron: distance based (not an exact volume). The deepest point
 // and the normal come from the closest feature of the polyhedron (face, edge
@@ -560,13 +565,20 @@ PD_INLINE OverlapResult toWorld(OverlapResult r, const Vec3& posA, const Quatern
 //  nothing and are never built; each integral is exact on a fan triangle
 //  (edge-midpoint rule). S = -(area vector of P's part of the boundary).
 //  tol, fallback normal and touching threshold as in overlapInFrameOfA.
-PD_INLINE OverlapResult halfSpaceClipOverlap
+struct ClipIntegrals
+{
+    double volume = 0;   //!< V
+    Vec3 moment;         //!< first moment about o, int (x - o) dV
+    Vec3 twiceArea;      //!< twice the area vector of P's boundary inside W
+    double surface = 0;  //!< area of P's boundary inside W
+};
+
+PD_INLINE ClipIntegrals halfSpaceClipIntegrals
 (
     const ConvexPolyhedron& P, const Vec3& pos, const Quaternion& q, const Vec3& o, const Vec3& n,
     const Vec3* sideNormal, const double* sideOffset, int nSide, double tol
 )
 {
-    OverlapResult r;
     Vec3 pn[4];
     double pd[4];
     pn[0] = n;
@@ -635,14 +647,31 @@ PD_INLINE OverlapResult halfSpaceClipOverlap
         twiceArea += polyArea;
         surface += 0.5 * norm(polyArea);
     }
+    ClipIntegrals I;
+    I.volume = volume;
+    I.moment = tMoment + hMoment * n;
+    I.twiceArea = twiceArea;
+    I.surface = surface;
+    return I;
+}
+
+//- The overlap from the integrals about o (c: the particle's centre - o)
+PD_INLINE OverlapResult clipOverlapResult
+(
+    const ClipIntegrals& I, const ConvexPolyhedron& P, const Vec3& o, const Vec3& c
+)
+{
+    OverlapResult r;
+    const double volume = I.volume;
+    const double surface = I.surface;
     if (!(volume > kOverlapTouchingVolume * P.volume))
     {
         return r;
     }
     r.touching = true;
     r.volume = volume;
-    r.centroid = o + (1.0 / volume) * (tMoment + hMoment * n);
-    r.areaVector = -0.5 * twiceArea;
+    r.centroid = o + (1.0 / volume) * I.moment;
+    r.areaVector = -0.5 * I.twiceArea;
     r.contactArea = norm(r.areaVector);
     if (r.contactArea > 1e-9 * (surface + r.contactArea))
     {
@@ -655,6 +684,18 @@ PD_INLINE OverlapResult halfSpaceClipOverlap
         r.normal = d > 1e-300 ? c / d : Vec3(0, 0, 1);
     }
     return r;
+}
+
+PD_INLINE OverlapResult halfSpaceClipOverlap
+(
+    const ConvexPolyhedron& P, const Vec3& pos, const Quaternion& q, const Vec3& o, const Vec3& n,
+    const Vec3* sideNormal, const double* sideOffset, int nSide, double tol
+)
+{
+    return clipOverlapResult
+    (
+        halfSpaceClipIntegrals(P, pos, q, o, n, sideNormal, sideOffset, nSide, tol), P, o, pos - o
+    );
 }
 
 } // namespace overlapDetail
@@ -715,11 +756,17 @@ inline PD_HD OverlapResult polyhedronPlaneOverlap(const ConvexPolyhedron& P, con
     return overlapDetail::halfSpaceClipOverlap(P, pos, q, origin, planeNormal, nullptr, nullptr, 0, tol);
 }
 
+//- A wall triangle whose solid has no floor (an open surface, or a body
+//  thicker than any particle can reach)
+constexpr double kUnboundedWallDepth = 1e300;
+
 //- Overlap of a polyhedron with the wall triangle (t0, t1, t2), counter-clockwise
-//  seen from the fluid side; the wall is the triangle's prism below it (see top).
+//  seen from the fluid side; the wall is the triangle's prism below it, down
+//  to wallDepth under the triangle's plane (see top; wallDepths in MeshQueries).
 inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, const Vec3& pos,
                                                      const Quaternion& q, const Vec3& t0,
-                                                     const Vec3& t1, const Vec3& t2)
+                                                     const Vec3& t1, const Vec3& t2,
+                                                     double wallDepth = kUnboundedWallDepth)
 {
     Vec3 n = cross(t1 - t0, t2 - t0);
     const double twiceArea = norm(n);
@@ -730,7 +777,7 @@ inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, 
     }
     n = n / twiceArea;
     const double dist = dot(n, pos - t0);
-    if (dist >= r)
+    if (dist >= r || dist + r <= -wallDepth)
     {
         return OverlapResult();
     }
@@ -756,7 +803,20 @@ inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, 
         sideOffset[i] = dot(m, t[i]);
     }
     const double tol = kOverlapPlaneTolerance * (radius > r ? radius : r);
-    return overlapDetail::halfSpaceClipOverlap(P, pos, q, origin, n, sideNormal, sideOffset, 3, tol);
+    overlapDetail::ClipIntegrals I =
+        overlapDetail::halfSpaceClipIntegrals(P, pos, q, origin, n, sideNormal, sideOffset, 3, tol);
+    if (dist - r < -wallDepth)
+    {
+        // The floor: take away the part of P below it (the same prism, its
+        // top moved down to the floor; the side planes are parallel to n)
+        const Vec3 floorOrigin = origin - wallDepth * n;
+        const overlapDetail::ClipIntegrals below = overlapDetail::halfSpaceClipIntegrals(
+            P, pos, q, floorOrigin, n, sideNormal, sideOffset, 3, tol);
+        I.volume -= below.volume;
+        I.moment -= below.moment - (wallDepth * below.volume) * n;
+        I.twiceArea -= below.twiceArea;
+    }
+    return overlapDetail::clipOverlapResult(I, P, origin, pos - origin);
 }
 
 //- Overlap of a polyhedron (A) with a sphere (B), distance based (see top):

@@ -24,6 +24,7 @@
 #include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Engine.hpp"
 #include "polyDEM/Error.hpp"
+#include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/RestitutionCalibration.hpp"
 
@@ -706,10 +707,14 @@ private:
 
         std::vector<MeshDevice> md;
         std::vector<Vec3> A, B, C;
+        std::vector<double> depth;
         std::vector<int> cellStart, cellTri;
         for (const auto& w : config_.meshes)
         {
             const TriangleMesh& mesh = w.mesh;
+            const std::vector<double> wd =
+                w.wallDepth.size() == mesh.size() ? w.wallDepth : wallDepths(mesh);
+            depth.insert(depth.end(), wd.begin(), wd.end());
             Vec3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
             for (const auto& p : mesh.points)
             {
@@ -784,6 +789,7 @@ private:
         }
         toDevice(meshes_, md);
         toDevice(triA_, A);
+        toDevice(triDepth_, depth);
         toDevice(triB_, B);
         toDevice(triC_, C);
         toDevice(meshCellStart_, cellStart);
@@ -1303,6 +1309,7 @@ private:
         m.meshes = ptr(meshes_);
         m.nMeshes = nMesh;
         m.triA = ptr(triA_);
+        m.triDepth = ptr(triDepth_);
         m.triB = ptr(triB_);
         m.triC = ptr(triC_);
         m.cellStart = ptr(meshCellStart_);
@@ -1434,6 +1441,7 @@ private:
 
     dvec<MeshDevice> meshes_;
     dvec<Vec3> triA_, triB_, triC_;
+    dvec<double> triDepth_;     //!< per triangle, how deep its wall solid reaches
     dvec<int> meshCellStart_, meshCellTri_;
     dvec<MeshSlot> meshSlots_;
 

@@ -436,6 +436,7 @@ struct MeshWallKernel
     const Vec3* triA;
     const Vec3* triB;
     const Vec3* triC;
+    const double* triDepth;  //!< per triangle, the floor of its prism (polyhedra)
     const int* cellStart;
     const int* cellTriangles;
     MeshSlot* meshSlots;     //!< per particle maxMeshSlots slots
@@ -470,26 +471,87 @@ struct MeshWallKernel
             if (Kind::polyhedra && Law::volumetric && shapeI >= 0)
             {
                 // Polyhedron: every triangle's prism adds its own overlap
-                // (coplanar neighbours partition the wall, so nothing is counted twice)
+                // (coplanar neighbours partition the wall, so nothing is
+                // counted twice). The triangles a particle touches form one
+                // contact per group of normals within 30 degrees (a face lying
+                // across triangle edges, a curved wall; a corner has several):
+                // its volume, first moment and area vector are the sums over
+                // the group's triangles, so one spring, one dashpot (of the
+                // whole area: the dashpot goes with the root of Kn A, which
+                // would not add over triangles) and one friction history, and
+                // however finely the wall is tessellated no triangle is left out
                 const ConvexPolyhedron P = law.shapes.shape(shapeI);
                 const Quaternion qBody = conjugate(R) * p.q[i];
-                for (int t = cellStart[cell]; t < cellStart[cell + 1] && nNext < maxMeshSlots; ++t)
+                const double sameContact = 0.8660254037844387;   // cos 30 degrees
+                OverlapResult group[maxMeshSlots];   // the first triangle's, then the sums
+                Vec3 groupMoment[maxMeshSlots], groupFirstNormal[maxMeshSlots];
+                int groupTriangle[maxMeshSlots], groupSize[maxMeshSlots];
+                int nGroups = 0;
+                for (int t = cellStart[cell]; t < cellStart[cell + 1]; ++t)
                 {
                     const int tri = cellTriangles[t];
                     const int g0 = mesh.firstTriangle + tri;
-                    const OverlapResult ovBody = polyhedronTriangleOverlap(P, y, qBody, triA[g0], triB[g0], triC[g0]);
-                    if (!ovBody.touching) continue;
-                    OverlapResult ov = ovBody;
-                    ov.normal = mesh.motion.directionToWorld(ovBody.normal, R);
-                    ov.centroid = mesh.motion.toWorld(ovBody.centroid, time, R);
+                    const OverlapResult ov = polyhedronTriangleOverlap(P, y, qBody, triA[g0], triB[g0], triC[g0],
+                                                                       triDepth[g0]);
+                    if (!ov.touching) continue;
+                    // The group whose first normal is nearest; a new one when
+                    // none is within 30 degrees and there is room
+                    int best = -1;
+                    double bestDot = -2;
+                    for (int k = 0; k < nGroups; ++k)
+                    {
+                        const double d = dot(groupFirstNormal[k], ov.normal);
+                        if (d > bestDot)
+                        {
+                            bestDot = d;
+                            best = k;
+                        }
+                    }
+                    if ((best < 0 || bestDot <= sameContact) && nNext + nGroups < maxMeshSlots)
+                    {
+                        best = nGroups++;
+                        group[best] = ov;
+                        groupMoment[best] = ov.volume * ov.centroid;
+                        groupFirstNormal[best] = ov.normal;
+                        groupTriangle[best] = tri;
+                        groupSize[best] = 1;
+                        continue;
+                    }
+                    if (best < 0) continue;
+                    group[best].volume += ov.volume;
+                    groupMoment[best] += ov.volume * ov.centroid;
+                    group[best].areaVector += ov.areaVector;
+                    ++groupSize[best];
+                }
+                for (int k = 0; k < nGroups; ++k)
+                {
+                    OverlapResult& body = group[k];
+                    if (groupSize[k] > 1)
+                    {
+                        body.centroid = (1.0 / body.volume) * groupMoment[k];
+                        body.contactArea = norm(body.areaVector);
+                        // A particle wholly inside the wall solid has no area
+                        // vector: keep the first triangle's normal
+                        body.normal = body.contactArea > 1e-9 * P.boundingRadius * P.boundingRadius
+                                          ? body.areaVector / body.contactArea
+                                          : groupFirstNormal[k];
+                    }
+                    OverlapResult ov = body;
+                    ov.normal = mesh.motion.directionToWorld(body.normal, R);
+                    ov.centroid = mesh.motion.toWorld(body.centroid, time, R);
+                    // The friction history of last step's contact of this mesh
+                    // along the same normal (slots keep -normal, world frame)
                     Vec3 sxi, smr;
+                    double slotDot = sameContact;
                     for (int s2 = 0; s2 < maxMeshSlots; ++s2)
                     {
-                        if (slots[s2].mesh == w && slots[s2].triangle == tri)
+                        if (slots[s2].mesh != w) continue;
+                        const double d = -dot(slots[s2].normal, ov.normal);
+                        if (d > slotDot)
                         {
+                            slotDot = d;
                             sxi = slots[s2].xi;
                             smr = slots[s2].mr;
-                            break;
                         }
                     }
                     ++walls;
@@ -498,7 +560,7 @@ struct MeshWallKernel
                                     energy ? energy + i : nullptr);
                     MeshSlot& ns = next[nNext++];
                     ns.mesh = w;
-                    ns.triangle = tri;
+                    ns.triangle = groupTriangle[k];
                     ns.normal = -ov.normal;
                     ns.xi = sxi;
                     ns.mr = smr;

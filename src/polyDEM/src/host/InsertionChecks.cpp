@@ -159,6 +159,13 @@ std::vector<InsertionOverlap> insertionOverlaps
     const int nLevels = 16;
     std::vector<std::vector<Grid>> triGrids(config.meshes.size());
     std::vector<std::vector<std::size_t>> seen(config.meshes.size());
+    // How deep each triangle's wall solid reaches (as the engine's)
+    std::vector<std::vector<double>> depths(config.meshes.size());
+    for (std::size_t mw = 0; mw < config.meshes.size(); ++mw)
+    {
+        const MeshWall& w = config.meshes[mw];
+        depths[mw] = w.wallDepth.size() == w.mesh.size() ? w.wallDepth : wallDepths(w.mesh);
+    }
     std::size_t stamp = 0;
     for (std::size_t mw = 0; mw < config.meshes.size(); ++mw)
     {
@@ -285,7 +292,8 @@ std::vector<InsertionOverlap> insertionOverlaps
                 dMin = std::min(dMin, d);
                 if (a.shape && d < a.r)
                 {
-                    const OverlapResult r = polyhedronTriangleOverlap(a.shape->view(), a.x, a.q, t0, t1, t2);
+                    const OverlapResult r = polyhedronTriangleOverlap(a.shape->view(), a.x, a.q, t0, t1, t2,
+                                                                        depths[mw][t]);
                     if (r.touching) v += r.volume;
                 }
             };
