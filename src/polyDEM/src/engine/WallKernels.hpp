@@ -495,7 +495,9 @@ struct MeshWallKernel
                                                                        triDepth[g0]);
                     if (!ov.touching) continue;
                     // The group whose first normal is nearest; a new one when
-                    // none is within 30 degrees and there is room
+                    // none is within 30 degrees and there is room (with no room,
+                    // the nearest: a particle touching more than maxMeshSlots
+                    // walls at once keeps all their volume, under fewer normals)
                     int best = -1;
                     double bestDot = -2;
                     for (int k = 0; k < nGroups; ++k)
