@@ -108,8 +108,9 @@ struct MeshWall
 {
     std::string name;
     TriangleMesh mesh;       //!< geometry at t = 0
-    //- Per triangle, how deep its wall solid reaches (wallDepths(mesh), set
-    //  by System; empty: the engine works it out)
+    //- Per triangle, how deep its wall solid reaches for polyhedra; empty
+    //  (the default): worked out by the engine and the insertion checks
+    //  (WallDepths.hpp); given: used as it is
     std::vector<double> wallDepth;
     int material = 0;
     WallMotion motion;

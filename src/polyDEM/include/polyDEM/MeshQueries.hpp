@@ -11,7 +11,6 @@
 #include "polyDEM/Vec3.hpp"
 
 #include <utility>
-#include <vector>
 
 namespace polydem
 {
@@ -47,20 +46,6 @@ double distanceToSurface(const TriangleMesh& mesh, const Vec3& p);
 //- Winding number and surface distance in one pass over the triangles
 void windingAndDistance(const TriangleMesh& mesh, const Vec3& p, double& winding,
                         double& distance);
-
-//- How deep each triangle's wall solid reaches below it (the overlap-volume
-//  law's prism, PolyhedronOverlap.hpp): the radius of the largest ball inside
-//  the body that touches the triangle (the largest over seven points: the
-//  centroid and points 5 % in from the vertices and edge midpoints), so that
-//  the prisms of a thin closed body (a hull, a lifter) stop near its middle
-//  and do not come out through its far side, and those of two faces meeting
-//  at an edge overlap less. The balls are bounded by half the distance along
-//  the inward normal to the body's far side (the least of the seven points'
-//  rays) and shrunk from there (the shrinking-ball method). kUnboundedWallDepth where no ray meets the
-//  surface (an open wall, the outside of a container). Hits closer than 1e-6
-//  of the mesh's size (coincident triangles) are ignored. A uniform grid,
-//  a 3D-DDA walk for the rays: about O(n) for n triangles.
-std::vector<double> wallDepths(const TriangleMesh& mesh);
 
 //- Axis-aligned bounding box (min, max) of the points; throws on an empty mesh
 std::pair<Vec3, Vec3> boundingBox(const TriangleMesh& mesh);

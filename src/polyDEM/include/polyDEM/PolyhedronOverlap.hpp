@@ -72,6 +72,7 @@
 #pragma once
 
 #include "polyDEM/ConvexPolyhedron.hpp"
+#include "polyDEM/TriangleMesh.hpp"
 #include "polyDEM/Macros.hpp"
 #include "polyDEM/Quaternion.hpp"
 #include "polyDEM/Vec3.hpp"
@@ -756,13 +757,9 @@ inline PD_HD OverlapResult polyhedronPlaneOverlap(const ConvexPolyhedron& P, con
     return overlapDetail::halfSpaceClipOverlap(P, pos, q, origin, planeNormal, nullptr, nullptr, 0, tol);
 }
 
-//- A wall triangle whose solid has no floor (an open surface, or a body
-//  thicker than any particle can reach)
-constexpr double kUnboundedWallDepth = 1e300;
-
 //- Overlap of a polyhedron with the wall triangle (t0, t1, t2), counter-clockwise
 //  seen from the fluid side; the wall is the triangle's prism below it, down
-//  to wallDepth under the triangle's plane (see top; wallDepths in MeshQueries).
+//  to wallDepth under the triangle's plane (see top; WallDepths.hpp).
 inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, const Vec3& pos,
                                                      const Quaternion& q, const Vec3& t0,
                                                      const Vec3& t1, const Vec3& t2,

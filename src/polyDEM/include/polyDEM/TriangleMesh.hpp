@@ -10,6 +10,10 @@
 namespace polydem
 {
 
+//- A wall triangle whose solid has no floor (an open surface, the outside of
+//  a container): WallDepths, polyhedronTriangleOverlap
+constexpr double kUnboundedWallDepth = 1e300;
+
 struct TriangleMesh
 {
     //- Shared vertices (duplicates from STL merged)

@@ -24,7 +24,7 @@
 #include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Engine.hpp"
 #include "polyDEM/Error.hpp"
-#include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/WallDepths.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/RestitutionCalibration.hpp"
 
@@ -712,8 +712,9 @@ private:
         for (const auto& w : config_.meshes)
         {
             const TriangleMesh& mesh = w.mesh;
+            // Floors no deeper than four particle reaches (WallDepths.hpp)
             const std::vector<double> wd =
-                w.wallDepth.size() == mesh.size() ? w.wallDepth : wallDepths(mesh);
+                w.wallDepth.size() == mesh.size() ? w.wallDepth : wallDepths(mesh, 4 * reach);
             depth.insert(depth.end(), wd.begin(), wd.end());
             Vec3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
             for (const auto& p : mesh.points)

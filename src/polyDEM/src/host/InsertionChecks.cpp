@@ -3,9 +3,11 @@
 
 #include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
+#include "polyDEM/WallDepths.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <unordered_map>
 
 namespace polydem
@@ -159,13 +161,16 @@ std::vector<InsertionOverlap> insertionOverlaps
     const int nLevels = 16;
     std::vector<std::vector<Grid>> triGrids(config.meshes.size());
     std::vector<std::vector<std::size_t>> seen(config.meshes.size());
-    // How deep each triangle's wall solid reaches (as the engine's)
-    std::vector<std::vector<double>> depths(config.meshes.size());
-    for (std::size_t mw = 0; mw < config.meshes.size(); ++mw)
+    // How deep each triangle's wall solid reaches (as the engine's: floors
+    // no deeper than four reaches of 1.25 rMax), for the triangles visited only
+    std::vector<std::unique_ptr<WallDepths>> depths(config.meshes.size());
+    auto depthOf = [&](std::size_t mw, std::size_t t)
     {
         const MeshWall& w = config.meshes[mw];
-        depths[mw] = w.wallDepth.size() == w.mesh.size() ? w.wallDepth : wallDepths(w.mesh);
-    }
+        if (w.wallDepth.size() == w.mesh.size()) return w.wallDepth[t];
+        if (!depths[mw]) depths[mw].reset(new WallDepths(w.mesh, 5 * rMax));
+        return (*depths[mw])(t);
+    };
     std::size_t stamp = 0;
     for (std::size_t mw = 0; mw < config.meshes.size(); ++mw)
     {
@@ -293,7 +298,7 @@ std::vector<InsertionOverlap> insertionOverlaps
                 if (a.shape && d < a.r)
                 {
                     const OverlapResult r = polyhedronTriangleOverlap(a.shape->view(), a.x, a.q, t0, t1, t2,
-                                                                        depths[mw][t]);
+                                                                        depthOf(mw, t));
                     if (r.touching) v += r.volume;
                 }
             };

@@ -2,7 +2,6 @@
 
 #include "polyDEM/ContactLaws.hpp"
 #include "polyDEM/Error.hpp"
-#include "polyDEM/MeshQueries.hpp"
 
 #include <dlfcn.h>
 
@@ -155,8 +154,6 @@ System::System(SimulationConfig config) : config_(std::move(config))
         if (norm(w.motion.axis) > 0) w.motion.axis = w.motion.axis / norm(w.motion.axis);
     for (auto& w : config_.meshes)
         if (norm(w.motion.axis) > 0) w.motion.axis = w.motion.axis / norm(w.motion.axis);
-    for (auto& w : config_.meshes)
-        if (w.wallDepth.size() != w.mesh.size()) w.wallDepth = wallDepths(w.mesh);
 
     const std::string libName = "libpolyDEM_" + config_.device + ".so";
     std::vector<std::string> folders;

@@ -9,6 +9,7 @@
 #include "ShapeGenerators.hpp"
 
 #include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/WallDepths.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 
 #include <gtest/gtest.h>
@@ -680,6 +681,11 @@ TEST(polyhedraOverlap, wallDepthsOfClosedAndOpenSurfaces)
         // 0.8 mm off the slab's middle plane
         EXPECT_LE(depth[t], 0.05 * (1 + 1e-12)) << "triangle " << t;
         EXPECT_GE(depth[t], 0.05 * 0.98) << "triangle " << t;
+    }
+    // Capped: no floor deeper than maxDepth
+    for (double d : wallDepths(slab, 0.02))
+    {
+        EXPECT_EQ(d, 0.02);
     }
     // The same box seen from inside (a container): the solid is outside, and
     // no ray into it meets the surface again

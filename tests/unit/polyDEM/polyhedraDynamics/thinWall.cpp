@@ -7,7 +7,7 @@
 // input restitution (face contact, as on a plane), also across two triangles.
 #include "PolyhedraCase.hpp"
 
-#include "polyDEM/MeshQueries.hpp"
+#include "polyDEM/WallDepths.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 
 #include <gtest/gtest.h>
