@@ -712,9 +712,14 @@ private:
         for (const auto& w : config_.meshes)
         {
             const TriangleMesh& mesh = w.mesh;
-            // Floors no deeper than four particle reaches (WallDepths.hpp)
+            // Floors no deeper than four particle reaches (WallDepths.hpp);
+            // only polyhedra use them
+            const bool polyhedra = std::any_of(config_.types.begin(), config_.types.end(),
+                                               [](const ParticleType& t) { return t.shape == ShapeKind::polyhedron; });
             const std::vector<double> wd =
-                w.wallDepth.size() == mesh.size() ? w.wallDepth : wallDepths(mesh, 4 * reach);
+                w.wallDepth.size() == mesh.size() ? w.wallDepth
+                : polyhedra ? wallDepths(mesh, 4 * reach)
+                : std::vector<double>(mesh.size(), kUnboundedWallDepth);
             depth.insert(depth.end(), wd.begin(), wd.end());
             Vec3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
             for (const auto& p : mesh.points)
