@@ -33,7 +33,6 @@ double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c)
     return 2.0 * std::atan2(num, den);
 }
 
-
 } // namespace
 
 
@@ -240,6 +239,5 @@ void transform(TriangleMesh& mesh, double scale, const Quaternion& rotation,
         p = rotate(q, scale * p) + translation;
     }
 }
-
 
 } // namespace polydem

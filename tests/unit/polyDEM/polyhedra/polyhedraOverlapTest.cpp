@@ -4,6 +4,7 @@
 // exact touching), walls (plane, triangles) and spheres.
 
 #include "ExactIntersection.hpp"
+#include "TestMeshes.hpp"
 
 #include "ConvexShapeBuilder.hpp"
 #include "ShapeGenerators.hpp"
@@ -638,38 +639,13 @@ TEST(polyhedraOverlap, packedTableMatchesShapes)
 }
 
 
-namespace
-{
-
-//- A closed box [lo, hi] in 12 triangles, counter-clockwise seen from outside
-TriangleMesh closedBox(const Vec3& lo, const Vec3& hi)
-{
-    TriangleMesh m;
-    for (int k = 0; k < 8; ++k)
-    {
-        m.points.push_back(Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
-    }
-    // Quads (corner indices) counter-clockwise seen from outside
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    for (const auto& q : quads)
-    {
-        m.triangles.push_back({q[0], q[1], q[2]});
-        m.triangles.push_back({q[0], q[2], q[3]});
-    }
-    m.source = "closedBox";
-    return m;
-}
-
-} // namespace
-
 
 // A closed body's prisms stop at its middle: wallDepths of a slab is half
 // its smallest thickness on every face (the radius of the largest ball
 // inside it), and an open surface (the inside of a container) has no floor
 TEST(polyhedraOverlap, wallDepthsOfClosedAndOpenSurfaces)
 {
-    const TriangleMesh slab = closedBox(Vec3(-1, -0.05, -0.25), Vec3(1, 0.05, 0.25));
+    const TriangleMesh slab = test::closedBox(Vec3(-1, -0.05, -0.25), Vec3(1, 0.05, 0.25));
     ASSERT_TRUE(isClosed(slab));
     ASSERT_GT(enclosedVolume(slab), 0);
     const std::vector<double> depth = wallDepths(slab);
@@ -705,7 +681,7 @@ TEST(polyhedraOverlap, wallDepthsOfClosedAndOpenSurfaces)
 TEST(polyhedraOverlap, thinClosedBodyHasNoFarSideOverlap)
 {
     const Vec3 lo(-1, -0.05, -0.25), hi(1, 0.05, 0.25);
-    const TriangleMesh slab = closedBox(lo, hi);
+    const TriangleMesh slab = test::closedBox(lo, hi);
     const std::vector<double> depth = wallDepths(slab);
     std::vector<Vec3> slabVertices = slab.points;
     const ConvexShape rock = makeRock(0.08, 0.8, 0.6, 20, 5);

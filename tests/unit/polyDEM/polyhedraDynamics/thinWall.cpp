@@ -6,6 +6,7 @@
 // control run shows. Pressed against the face, the cube rebounds with the
 // input restitution (face contact, as on a plane), also across two triangles.
 #include "PolyhedraCase.hpp"
+#include "TestMeshes.hpp"
 
 #include "polyDEM/WallDepths.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
@@ -19,25 +20,6 @@ using namespace polydem;
 namespace
 {
 
-//- A closed box [lo, hi] in 12 triangles, counter-clockwise seen from outside
-TriangleMesh closedBox(const Vec3& lo, const Vec3& hi)
-{
-    TriangleMesh m;
-    for (int k = 0; k < 8; ++k)
-    {
-        m.points.push_back(Vec3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z));
-    }
-    const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                             {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    for (const auto& q : quads)
-    {
-        m.triangles.push_back({q[0], q[1], q[2]});
-        m.triangles.push_back({q[0], q[2], q[3]});
-    }
-    m.source = "slab";
-    return m;
-}
-
 const double a = 0.1;   // cube edge = slab thickness
 
 SimulationConfig slabConfig(double e, bool floors)
@@ -47,7 +29,7 @@ SimulationConfig slabConfig(double e, bool floors)
     cfg.timeStep = 1e-4;
     MeshWall w;
     w.name = "slab";
-    w.mesh = closedBox(Vec3(-1, -0.05, -0.25), Vec3(1, 0.05, 0.25));
+    w.mesh = test::closedBox(Vec3(-1, -0.05, -0.25), Vec3(1, 0.05, 0.25));
     if (!floors)
     {
         // Given depths are kept by System: the old, unlimited prisms
