@@ -49,7 +49,10 @@ Description
     (freeSurfacePressure). MULES' correction flux is dropped on the
     boundary faces it would pass unlimited (backflow through an outlet
     whose alpha1 follows the cell; dropUnlimitedBoundaryCorrection.H), so
-    alpha1 stays in [0, 1] there too. All coupling calls: createCoupling.H,
+    alpha1 stays in [0, 1] there too; and bounded in the cells MULES'
+    iterated limiter left outside [0, 1] (boundAlphaCorrection.H,
+    MULESBoundTolerance in the alpha1 solver dictionary, default 1e-10).
+    All coupling calls: createCoupling.H,
     couplingEvolve.H, couplingWrite.H. Without particles the operations
     are interFoam's.
 
@@ -103,6 +106,7 @@ Description
 #include "dynamicRefineFvMesh.H"
 #include "CMULES.H"
 #include "dropUnlimitedBoundaryCorrection.H"
+#include "boundAlphaCorrection.H"
 #include "couplingCorrectPhi.H"
 #include "EulerDdtScheme.H"
 #include "localEulerDdtScheme.H"
