@@ -45,20 +45,25 @@
 // A pair that touched at its last evaluation skips the separating-axis tests.
 //
 // Walls: a plane is treated as the solid half-space below it and a wall
-// triangle as the solid prism below it (the half-space restricted to the
-// triangle's normal prism), down to the triangle's wall depth: half the
-// thickness of the body behind it, so that the prisms of a thin closed body
+// triangle as the part of the body below it that is the triangle's: bounded
+// by the bisector planes with its neighbours' planes at its edges and at its
+// vertices (WallSidePlanes.hpp), so that the triangles' solids partition the
+// body at convex edges (a bilge, the edge of a box) and concave ones (an
+// inside corner) alike, and down to the triangle's wall depth: half the
+// thickness of the body behind it, so that the solids of a thin closed body
 // (a ship hull, a lifter) stop at its middle and do not come out through its
-// far side onto particles there. Only the particle's faces are clipped, by the
-// wall plane and the prism's side planes (halfSpaceClipOverlap); the floor is
-// the same clip moved down to it, taken away. Volume and
-// centroid follow from fields that vanish on the wall's own faces, so the
-// wall is never built as a polyhedron. Exact to round-off. Limit of the triangle
-// model: the volumes of a particle over several triangles add, which is exact
-// for coplanar neighbours, but at a convex edge of a closed body the two
-// faces' prisms overlap inside it (down to their floors) and count that part
-// twice, and at a concave edge (an inside corner) a wedge below both faces
-// belongs to neither; the normal is then the area-weighted mean of the walls.
+// far side onto particles there. Only the particle's faces are clipped, by
+// the wall plane and the side planes (halfSpaceClipOverlap), plus, for each
+// side plane tilted against the wall's normal, the particle's section by it;
+// the floor is the same clip moved down to it, taken away. Volume and
+// centroid follow from fields that vanish on the wall's top and carry no flux
+// through sides parallel to its normal, so the wall is never built as a
+// polyhedron. Exact to round-off: a particle over several triangles overlaps
+// them by its overlap with the body (polyhedraOverlap
+// convexEdgesAndCornersOfClosedBody, concaveEdgesAndCornersOfContainer).
+// Limits: at a saddle vertex the vertex bisectors that would cut a triangle
+// are left out (WallSidePlanes.hpp), and a body's solids are cut at the floor
+// depth, not at its medial surface.
 //
 // Sphere-polyhedron: distance based (not an exact volume). The deepest point
 // and the normal come from the closest feature of the polyhedron (face, edge
@@ -555,17 +560,21 @@ PD_INLINE OverlapResult toWorld(OverlapResult r, const Vec3& posA, const Quatern
 
 //- Overlap of polyhedron P (pose pos, q, world frame) with the wall solid
 //  W = {x : n.(x - o) <= 0} n {x : m_k.x <= d_k, k < nSide} (o on the wall
-//  plane; side planes in coordinates relative to o, parallel to n: a
-//  triangle's prism, or none for a plane). Only P's faces are clipped (by at
-//  most 1 + nSide planes, against a six-plane box or a five-plane prism clipped
-//  both ways before). Volume and centroid by the divergence theorem with
-//  fields parallel to n that vanish on the wall plane, h = n.(x - o):
+//  plane; side planes in coordinates relative to o: a triangle's prism or its
+//  edges' bisectors, WallSidePlanes.hpp; none for a plane). Only P's faces are
+//  clipped (by at most 1 + nSide planes, against a six-plane box or a
+//  five-plane prism clipped both ways before). Volume and centroid by the
+//  divergence theorem with fields parallel to n that vanish on the wall plane,
+//  h = n.(x - o):
 //      V = surf h (n.N) dA,  int h dV = surf h^2/2 (n.N) dA,
 //      int t dV = surf h t (n.N) dA   (t: the part of x - o normal to n),
-//  so the wall's own faces (h = 0 on the top, n.N = 0 on the sides) add
-//  nothing and are never built; each integral is exact on a fan triangle
-//  (edge-midpoint rule). S = -(area vector of P's part of the boundary).
-//  tol, fallback normal and touching threshold as in overlapInFrameOfA.
+//  so the wall's top (h = 0) and its sides parallel to n (n.N = 0) add
+//  nothing and are never built. A side plane tilted against n (a bisector)
+//  does carry flux: its part inside P (P's section by the plane, clipped by
+//  the other planes of W) is added as one more face. Each integral is exact
+//  on a fan triangle (edge-midpoint rule). S = -(area vector of P's part of
+//  the boundary). tol, fallback normal and touching threshold as in
+//  overlapInFrameOfA.
 struct ClipIntegrals
 {
     double volume = 0;   //!< V
@@ -574,14 +583,106 @@ struct ClipIntegrals
     double surface = 0;  //!< area of P's boundary inside W
 };
 
+//- Adds the flux integrals of the fields above through the planar polygon
+//  poly (nv vertices relative to o, counter-clockwise about its outward
+//  normal) to volume, hMoment and tMoment; returns twice its area vector
+PD_INLINE Vec3 addClipFan
+(
+    const Vec3* poly, int nv, const Vec3& n, double& volume, double& hMoment, Vec3& tMoment
+)
+{
+    Vec3 polyArea;
+    const Vec3 x0 = poly[0];
+    const double h0 = dot(n, x0);
+    const Vec3 t0 = x0 - h0 * n;
+    for (int i = 1; i + 1 < nv; ++i)
+    {
+        const Vec3 x1 = poly[i], x2 = poly[i + 1];
+        const Vec3 a2 = cross(x1 - x0, x2 - x0);
+        polyArea += a2;
+        const double w = 0.5 * dot(n, a2);   // projected, signed area
+        const double h1 = dot(n, x1), h2 = dot(n, x2);
+        const Vec3 t1 = x1 - h1 * n, t2 = x2 - h2 * n;
+        // Edge midpoints: exact for the quadratic integrands
+        const double ha = 0.5 * (h0 + h1), hb = 0.5 * (h1 + h2), hc = 0.5 * (h2 + h0);
+        const Vec3 ta = 0.5 * (t0 + t1), tb = 0.5 * (t1 + t2), tc = 0.5 * (t2 + t0);
+        volume += w * (h0 + h1 + h2) * (1.0 / 3.0);
+        hMoment += w * (ha * ha + hb * hb + hc * hc) * (1.0 / 6.0);
+        tMoment += (w * (1.0 / 3.0)) * (ha * ta + hb * tb + hc * tc);
+    }
+    return polyArea;
+}
+
+//- The section of P (vertices v, signed distances s to a plane) by that
+//  plane: the points where P's faces leave the plane's inner side, one per
+//  face that crosses it, written to out unordered. Returns their number.
+PD_INLINE int planeSection(const ConvexPolyhedron& P, const Vec3* v, const double* s, Vec3* out)
+{
+    int np = 0;
+    for (int f = 0; f < P.nFaces; ++f)
+    {
+        const int f0 = P.faceStart[f];
+        const int fm = P.faceSize(f);
+        for (int i = 0; i < fm; ++i)
+        {
+            const int a = P.faceVertex[f0 + i];
+            const int b = P.faceVertex[f0 + (i + 1 == fm ? 0 : i + 1)];
+            if (s[a] <= 0 && s[b] > 0)
+            {
+                out[np++] = v[a] + (s[a] / (s[a] - s[b])) * (v[b] - v[a]);
+                break;   // a convex face leaves once
+            }
+        }
+    }
+    return np;
+}
+
+//- Orders the np points of a convex polygon in a plane of unit normal m
+//  counter-clockwise about m (a sort about their mean by a pseudo-angle in
+//  [0, 4): monotone in the angle, with no trigonometry)
+PD_INLINE void orderAbout(const Vec3& m, Vec3* out, int np)
+{
+    Vec3 mean;
+    for (int i = 0; i < np; ++i) mean += out[i];
+    mean = (1.0 / np) * mean;
+    // A basis (u, w) of the plane with u x w = m
+    const Vec3 a = fabs(m.x) < 0.6 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    Vec3 u = cross(a, m);
+    u = u / norm(u);
+    const Vec3 w = cross(m, u);
+    double angle[kClipBuffer];
+    for (int i = 0; i < np; ++i)
+    {
+        const Vec3 d = out[i] - mean;
+        const double x = dot(d, u), y = dot(d, w);
+        const double l1 = fabs(x) + fabs(y);
+        const double r = l1 > 0 ? y / l1 : 0;   // sin-like, in [-1, 1]
+        angle[i] = x >= 0 ? (y >= 0 ? r : 4 + r) : 2 - r;
+    }
+    for (int i = 1; i < np; ++i)   // insertion sort: a few points
+    {
+        const Vec3 x = out[i];
+        const double t = angle[i];
+        int j = i;
+        while (j > 0 && angle[j - 1] > t)
+        {
+            out[j] = out[j - 1];
+            angle[j] = angle[j - 1];
+            --j;
+        }
+        out[j] = x;
+        angle[j] = t;
+    }
+}
+
 PD_INLINE ClipIntegrals halfSpaceClipIntegrals
 (
     const ConvexPolyhedron& P, const Vec3& pos, const Quaternion& q, const Vec3& o, const Vec3& n,
     const Vec3* sideNormal, const double* sideOffset, int nSide, double tol
 )
 {
-    Vec3 pn[4];
-    double pd[4];
+    Vec3 pn[1 + kMaxWallSidePlanes];
+    double pd[1 + kMaxWallSidePlanes];
     pn[0] = n;
     pd[0] = 0;
     for (int k = 0; k < nSide; ++k)
@@ -626,27 +727,50 @@ PD_INLINE ClipIntegrals halfSpaceClipIntegrals
         const Vec3 faceNormal = rotate(q, P.faceNormals[f]);
         const int nv = clipPolygon(bufA, bufB, m, pn, pd, nPlanes, faceNormal, true, tol, poly);
         if (nv < 3) continue;
-        Vec3 polyArea;
-        const Vec3 x0 = poly[0];
-        const double h0 = dot(n, x0);
-        const Vec3 t0 = x0 - h0 * n;
-        for (int i = 1; i + 1 < nv; ++i)
-        {
-            const Vec3 x1 = poly[i], x2 = poly[i + 1];
-            const Vec3 a2 = cross(x1 - x0, x2 - x0);
-            polyArea += a2;
-            const double w = 0.5 * dot(n, a2);   // projected, signed area
-            const double h1 = dot(n, x1), h2 = dot(n, x2);
-            const Vec3 t1 = x1 - h1 * n, t2 = x2 - h2 * n;
-            // Edge midpoints: exact for the quadratic integrands
-            const double ha = 0.5 * (h0 + h1), hb = 0.5 * (h1 + h2), hc = 0.5 * (h2 + h0);
-            const Vec3 ta = 0.5 * (t0 + t1), tb = 0.5 * (t1 + t2), tc = 0.5 * (t2 + t0);
-            volume += w * (h0 + h1 + h2) * (1.0 / 3.0);
-            hMoment += w * (ha * ha + hb * hb + hc * hc) * (1.0 / 6.0);
-            tMoment += (w * (1.0 / 3.0)) * (ha * ta + hb * tb + hc * tc);
-        }
+        const Vec3 polyArea = addClipFan(poly, nv, n, volume, hMoment, tMoment);
         twiceArea += polyArea;
         surface += 0.5 * norm(polyArea);
+    }
+    // Side planes tilted against n: their part inside P is a face of P n W
+    // (outward normal m_k) through which the fields carry flux. It can be
+    // all there is (P holding the whole of a small triangle's solid), so it
+    // is looked for whenever P reaches below the wall plane.
+    bool below = false;
+    for (int i = 0; i < P.nVertices && !below; ++i) below = hv[i] < -tol;
+    if (below)
+    {
+        for (int k = 1; k < nPlanes; ++k)
+        {
+            if (fabs(dot(pn[k], n)) < 1e-12) continue;
+            double s[kMaxPolyhedronVertices];
+            bool anyOut = false;
+            for (int i = 0; i < P.nVertices; ++i)
+            {
+                s[i] = dot(pn[k], v[i]) - pd[k];
+                anyOut = anyOut || s[i] > 0;
+            }
+            if (!anyOut) continue;   // P wholly on the inner side
+            const int ns = planeSection(P, v, s, bufA);
+            if (ns < 3) continue;
+            bool sectionBelow = false;   // else it misses the wall solid
+            for (int i = 0; i < ns && !sectionBelow; ++i) sectionBelow = dot(n, bufA[i]) < -tol;
+            if (!sectionBelow) continue;
+            orderAbout(pn[k], bufA, ns);
+            // Clipped by W's other planes
+            Vec3 qn[kMaxWallSidePlanes];
+            double qd[kMaxWallSidePlanes];
+            int nq = 0;
+            for (int j = 0; j < nPlanes; ++j)
+            {
+                if (j == k) continue;
+                qn[nq] = pn[j];
+                qd[nq++] = pd[j];
+            }
+            Vec3* poly = nullptr;
+            const int nv = clipPolygon(bufA, bufB, ns, qn, qd, nq, pn[k], false, tol, poly);
+            if (nv < 3) continue;
+            addClipFan(poly, nv, n, volume, hMoment, tMoment);
+        }
     }
     ClipIntegrals I;
     I.volume = volume;
@@ -758,12 +882,18 @@ inline PD_HD OverlapResult polyhedronPlaneOverlap(const ConvexPolyhedron& P, con
 }
 
 //- Overlap of a polyhedron with the wall triangle (t0, t1, t2), counter-clockwise
-//  seen from the fluid side; the wall is the triangle's prism below it, down
-//  to wallDepth under the triangle's plane (see top; WallDepths.hpp).
+//  seen from the fluid side; the wall is the triangle's solid below it, down
+//  to wallDepth under the triangle's plane (see top; WallDepths.hpp), bounded
+//  by the nSides planes sideNormal[k].(x - t0) <= sideOffset[k]
+//  (WallSidePlanes.hpp: the bisectors with its neighbours' planes; at most
+//  kMaxWallSidePlanes); sideNormal null: the triangle's normal prism.
 inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, const Vec3& pos,
                                                      const Quaternion& q, const Vec3& t0,
                                                      const Vec3& t1, const Vec3& t2,
-                                                     double wallDepth = kUnboundedWallDepth)
+                                                     double wallDepth = kUnboundedWallDepth,
+                                                     const Vec3* sideNormal = nullptr,
+                                                     const double* sideOffset = nullptr,
+                                                     int nSides = 0)
 {
     Vec3 n = cross(t1 - t0, t2 - t0);
     const double twiceArea = norm(n);
@@ -779,36 +909,58 @@ inline PD_HD OverlapResult polyhedronTriangleOverlap(const ConvexPolyhedron& P, 
         return OverlapResult();
     }
     // Work relative to the triangle's centroid for accuracy. The wall is the
-    // triangle's normal prism below it: the plane and three side planes.
+    // triangle's solid below it: the plane and its side planes.
     const Vec3 origin = (t0 + t1 + t2) / 3.0;
     const double depth = 2.0 * r + (dist < 0 ? -dist : 0.0);
     const Vec3 t[3] = {t0 - origin, t1 - origin, t2 - origin};
     double radius = 0;
-    Vec3 sideNormal[3];
-    double sideOffset[3];
     for (int i = 0; i < 3; ++i)
     {
         const double ri = norm(t[i] - depth * n);
         radius = ri > radius ? ri : radius;
         const double rt = norm(t[i]);
         radius = rt > radius ? rt : radius;
-        // Outward normal of the side through edge (i, i+1), counter-clockwise about n
-        const Vec3 e = t[(i + 1) % 3] - t[i];
-        Vec3 m = cross(e, n);
-        m = m / norm(m);
-        sideNormal[i] = m;
-        sideOffset[i] = dot(m, t[i]);
+    }
+    Vec3 m[kMaxWallSidePlanes];
+    double d[kMaxWallSidePlanes];
+    int nm = 0;
+    if (sideNormal)
+    {
+        nm = nSides < kMaxWallSidePlanes ? nSides : kMaxWallSidePlanes;
+        for (int k = 0; k < nm; ++k)
+        {
+            m[k] = sideNormal[k];
+            d[k] = sideOffset[k] + dot(m[k], t[0]);   // about the centroid
+        }
+    }
+    else
+    {
+        // The normal prism: the side through edge (i, i+1), counter-clockwise about n
+        nm = 3;
+        for (int i = 0; i < 3; ++i)
+        {
+            const Vec3 e = t[(i + 1) % 3] - t[i];
+            m[i] = cross(e, n);
+            m[i] = m[i] / norm(m[i]);
+            d[i] = dot(m[i], t[i]);
+        }
     }
     const double tol = kOverlapPlaneTolerance * (radius > r ? radius : r);
     overlapDetail::ClipIntegrals I =
-        overlapDetail::halfSpaceClipIntegrals(P, pos, q, origin, n, sideNormal, sideOffset, 3, tol);
+        overlapDetail::halfSpaceClipIntegrals(P, pos, q, origin, n, m, d, nm, tol);
     if (dist - r < -wallDepth)
     {
-        // The floor: take away the part of P below it (the same prism, its
-        // top moved down to the floor; the side planes are parallel to n)
+        // The floor: take away the part of P below it (the same solid, its
+        // top moved down to the floor; the side offsets taken about the
+        // floor's origin, which moves them where a side is tilted against n)
         const Vec3 floorOrigin = origin - wallDepth * n;
+        double floorOffset[kMaxWallSidePlanes];
+        for (int k = 0; k < nm; ++k)
+        {
+            floorOffset[k] = d[k] + wallDepth * dot(m[k], n);
+        }
         const overlapDetail::ClipIntegrals below = overlapDetail::halfSpaceClipIntegrals(
-            P, pos, q, floorOrigin, n, sideNormal, sideOffset, 3, tol);
+            P, pos, q, floorOrigin, n, m, floorOffset, nm, tol);
         I.volume -= below.volume;
         I.moment -= below.moment - (wallDepth * below.volume) * n;
         I.twiceArea -= below.twiceArea;

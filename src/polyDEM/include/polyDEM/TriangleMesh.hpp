@@ -14,6 +14,10 @@ namespace polydem
 //  a container): WallDepths, polyhedronTriangleOverlap
 constexpr double kUnboundedWallDepth = 1e300;
 
+//- Most side planes of one wall triangle's solid: three edges, then the
+//  faces meeting it at a vertex only (WallSidePlanes.hpp)
+constexpr int kMaxWallSidePlanes = 9;
+
 struct TriangleMesh
 {
     //- Shared vertices (duplicates from STL merged)

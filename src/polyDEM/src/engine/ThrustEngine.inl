@@ -25,6 +25,7 @@
 #include "polyDEM/Engine.hpp"
 #include "polyDEM/Error.hpp"
 #include "polyDEM/WallDepths.hpp"
+#include "polyDEM/WallSidePlanes.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/RestitutionCalibration.hpp"
 
@@ -708,6 +709,9 @@ private:
         std::vector<MeshDevice> md;
         std::vector<Vec3> A, B, C;
         std::vector<double> depth;
+        std::vector<int> sideStart{0};   // per triangle, its side planes (CSR)
+        std::vector<Vec3> sideNormal;
+        std::vector<double> sideOffset;
         std::vector<int> cellStart, cellTri;
         for (const auto& w : config_.meshes)
         {
@@ -721,6 +725,18 @@ private:
                 : polyhedra ? wallDepths(mesh, 4 * reach)
                 : std::vector<double>(mesh.size(), kUnboundedWallDepth);
             depth.insert(depth.end(), wd.begin(), wd.end());
+            if (polyhedra)
+            {
+                const WallSidePlanes sp = wallSidePlanes(mesh);
+                const int base = int(sideNormal.size());
+                for (std::size_t t = 1; t < sp.start.size(); ++t) sideStart.push_back(base + sp.start[t]);
+                sideNormal.insert(sideNormal.end(), sp.normal.begin(), sp.normal.end());
+                sideOffset.insert(sideOffset.end(), sp.offset.begin(), sp.offset.end());
+            }
+            else
+            {
+                sideStart.resize(sideStart.size() + mesh.size(), int(sideNormal.size()));   // spheres: none
+            }
             Vec3 lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
             for (const auto& p : mesh.points)
             {
@@ -796,6 +812,9 @@ private:
         toDevice(meshes_, md);
         toDevice(triA_, A);
         toDevice(triDepth_, depth);
+        toDevice(triSideStart_, sideStart);
+        toDevice(triSideNormal_, sideNormal);
+        toDevice(triSideOffset_, sideOffset);
         toDevice(triB_, B);
         toDevice(triC_, C);
         toDevice(meshCellStart_, cellStart);
@@ -1316,6 +1335,9 @@ private:
         m.nMeshes = nMesh;
         m.triA = ptr(triA_);
         m.triDepth = ptr(triDepth_);
+        m.triSideStart = ptr(triSideStart_);
+        m.triSideNormal = triSideNormal_.empty() ? nullptr : ptr(triSideNormal_);
+        m.triSideOffset = triSideOffset_.empty() ? nullptr : ptr(triSideOffset_);
         m.triB = ptr(triB_);
         m.triC = ptr(triC_);
         m.cellStart = ptr(meshCellStart_);
@@ -1448,6 +1470,9 @@ private:
     dvec<MeshDevice> meshes_;
     dvec<Vec3> triA_, triB_, triC_;
     dvec<double> triDepth_;     //!< per triangle, how deep its wall solid reaches
+    dvec<int> triSideStart_;    //!< per triangle, its side planes (CSR; WallSidePlanes.hpp)
+    dvec<Vec3> triSideNormal_;
+    dvec<double> triSideOffset_;
     dvec<int> meshCellStart_, meshCellTri_;
     dvec<MeshSlot> meshSlots_;
 

@@ -436,7 +436,10 @@ struct MeshWallKernel
     const Vec3* triA;
     const Vec3* triB;
     const Vec3* triC;
-    const double* triDepth;  //!< per triangle, the floor of its prism (polyhedra)
+    const double* triDepth;  //!< per triangle, the floor of its solid (polyhedra)
+    const int* triSideStart; //!< per triangle, its side planes (CSR; polyhedra)
+    const Vec3* triSideNormal;
+    const double* triSideOffset;
     const int* cellStart;
     const int* cellTriangles;
     MeshSlot* meshSlots;     //!< per particle maxMeshSlots slots
@@ -470,10 +473,11 @@ struct MeshWallKernel
             const int shapeI = law.typeShape[p.type[i]];
             if (Kind::polyhedra && Law::volumetric && shapeI >= 0)
             {
-                // Polyhedron: every triangle's prism adds its own overlap
-                // (coplanar neighbours partition the wall, so nothing is
-                // counted twice). The triangles a particle touches form one
-                // contact per group of normals within 30 degrees (a face lying
+                // Polyhedron: every triangle's solid adds its own overlap
+                // (neighbours meet on bisector planes and partition the
+                // body, WallSidePlanes.hpp: nothing is counted twice, at
+                // edges and corners too). The triangles a particle touches
+                // form one contact per group of normals within 30 degrees (a face lying
                 // across triangle edges, a curved wall; a corner has several):
                 // its volume, first moment and area vector are the sums over
                 // the group's triangles, so one spring, one dashpot (of the
@@ -491,8 +495,10 @@ struct MeshWallKernel
                 {
                     const int tri = cellTriangles[t];
                     const int g0 = mesh.firstTriangle + tri;
+                    const int s0 = triSideStart[g0];
                     const OverlapResult ov = polyhedronTriangleOverlap(P, y, qBody, triA[g0], triB[g0], triC[g0],
-                                                                       triDepth[g0]);
+                                                                       triDepth[g0], triSideNormal + s0,
+                                                                       triSideOffset + s0, triSideStart[g0 + 1] - s0);
                     if (!ov.touching) continue;
                     // The group whose first normal is nearest; a new one when
                     // none is within 30 degrees and there is room (with no room,

@@ -4,6 +4,7 @@
 #include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 #include "polyDEM/WallDepths.hpp"
+#include "polyDEM/WallSidePlanes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -171,6 +172,13 @@ std::vector<InsertionOverlap> insertionOverlaps
         if (!depths[mw]) depths[mw].reset(new WallDepths(w.mesh, 5 * rMax));
         return (*depths[mw])(t);
     };
+    // Each triangle's side planes (as the engine's), for meshes a polyhedron meets
+    std::vector<WallSidePlanes> sides(config.meshes.size());
+    auto sidesOf = [&](std::size_t mw) -> const WallSidePlanes&
+    {
+        if (sides[mw].start.empty()) sides[mw] = wallSidePlanes(config.meshes[mw].mesh);
+        return sides[mw];
+    };
     std::size_t stamp = 0;
     for (std::size_t mw = 0; mw < config.meshes.size(); ++mw)
     {
@@ -297,8 +305,11 @@ std::vector<InsertionOverlap> insertionOverlaps
                 dMin = std::min(dMin, d);
                 if (a.shape && d < a.r)
                 {
+                    const WallSidePlanes& sp = sidesOf(mw);
+                    const int s0 = sp.start[t];
                     const OverlapResult r = polyhedronTriangleOverlap(a.shape->view(), a.x, a.q, t0, t1, t2,
-                                                                        depthOf(mw, t));
+                                                                        depthOf(mw, t), sp.normal.data() + s0,
+                                                                        sp.offset.data() + s0, sp.start[t + 1] - s0);
                     if (r.touching) v += r.volume;
                 }
             };

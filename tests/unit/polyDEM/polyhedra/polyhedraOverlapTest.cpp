@@ -11,6 +11,7 @@
 
 #include "polyDEM/MeshQueries.hpp"
 #include "polyDEM/WallDepths.hpp"
+#include "polyDEM/WallSidePlanes.hpp"
 #include "polyDEM/PolyhedronOverlap.hpp"
 
 #include <gtest/gtest.h>
@@ -723,4 +724,150 @@ TEST(polyhedraOverlap, thinClosedBodyHasNoFarSideOverlap)
     EXPECT_GT(pressed, 50);
     // The test can fail: the unbounded prisms do count the far face
     EXPECT_GT(farSide, 50);
+}
+
+
+namespace
+{
+
+//- A rock posed near a random corner of the box [lo, hi]: along each axis
+//  from `out` outside the corner's face to `in` inside it
+Vec3 nearCorner(const Vec3& lo, const Vec3& hi, double out, double in, std::mt19937_64& rng)
+{
+    std::uniform_real_distribution<double> u(0, 1);
+    const int corner = int(rng() % 8);
+    Vec3 pos;
+    for (int d = 0; d < 3; ++d)
+    {
+        const bool high = corner & (1 << d);
+        const double c = high ? hi[d] : lo[d];
+        const double inward = high ? -1.0 : 1.0;
+        pos[d] = c + inward * (-out + (out + in) * u(rng));
+    }
+    return pos;
+}
+
+struct TriangleSum
+{
+    double volume = 0;
+    Vec3 moment;
+};
+
+//- The overlaps of P with every triangle of mesh, added (sides null: each
+//  triangle's normal prism)
+TriangleSum overTriangles(const ConvexShape& P, const Vec3& pos, const Quaternion& q,
+                          const TriangleMesh& mesh, const std::vector<double>& depth,
+                          const WallSidePlanes* sides)
+{
+    TriangleSum sum;
+    for (std::size_t t = 0; t < mesh.size(); ++t)
+    {
+        const auto& tri = mesh.triangles[t];
+        const int s0 = sides ? sides->start[t] : 0;
+        const OverlapResult r = polyhedronTriangleOverlap(
+            P.view(), pos, q, mesh.points[tri[0]], mesh.points[tri[1]], mesh.points[tri[2]], depth[t],
+            sides ? sides->normal.data() + s0 : nullptr, sides ? sides->offset.data() + s0 : nullptr,
+            sides ? sides->start[t + 1] - s0 : 0);
+        EXPECT_TRUE(finite(r));
+        if (r.touching)
+        {
+            sum.volume += r.volume;
+            sum.moment += r.volume * r.centroid;
+        }
+    }
+    return sum;
+}
+
+} // namespace
+
+
+// At the edges and corners of a closed box (convex edges: a hull's bilge,
+// a lifter's edge) the triangles' solids, bounded by the bisectors of their
+// edges (WallSidePlanes.hpp), partition the body: a rock there overlaps them
+// by exactly its overlap with the box (CGAL), volume and centroid. The
+// triangles' normal prisms overlap each other there and count that part
+// twice, which the test also shows
+TEST(polyhedraOverlap, convexEdgesAndCornersOfClosedBody)
+{
+    const Vec3 lo(-0.3, -0.2, -0.15), hi(0.3, 0.2, 0.15);
+    const TriangleMesh box = test::closedBox(lo, hi);
+    const std::vector<double> depth = wallDepths(box);
+    const WallSidePlanes sides = wallSidePlanes(box);
+    const ConvexShape rock = makeRock(0.08, 0.8, 0.6, 20, 7);
+    std::mt19937_64 rng(31);
+    int touching = 0, prismsOver = 0;
+    double maxVolumeError = 0, maxCentroidError = 0, worstPrism = 0;
+    for (int k = 0; k < 400; ++k)
+    {
+        const Quaternion q = randomRotation(rng);
+        const Vec3 pos = nearCorner(lo, hi, 0.05, 0.06, rng);
+        const test::ExactOverlap ref = test::exactOverlap(worldVertices(rock, pos, q), box.points);
+        const TriangleSum sum = overTriangles(rock, pos, q, box, depth, &sides);
+        const double error = std::fabs(sum.volume - ref.volume) / rock.volume;
+        maxVolumeError = std::max(maxVolumeError, error);
+        EXPECT_LT(error, 1e-12) << "pose " << k << ": " << sum.volume << " against " << ref.volume;
+        if (ref.volume > 1e-3 * rock.volume)
+        {
+            ++touching;
+            const double centroidError = norm(sum.moment / sum.volume - ref.centroid) / 0.08;
+            maxCentroidError = std::max(maxCentroidError, centroidError);
+            EXPECT_LT(centroidError, 1e-9) << "pose " << k;
+        }
+        const TriangleSum prisms = overTriangles(rock, pos, q, box, depth, nullptr);
+        const double over = (prisms.volume - ref.volume) / rock.volume;
+        worstPrism = std::max(worstPrism, over);
+        if (over > 0.01) ++prismsOver;
+    }
+    std::printf("closed box, near its corners: %d poses overlapping; volume error %.2e of the rock's,"
+                " centroid %.2e of its size; normal prisms: %d poses over by > 1 %% of the rock"
+                " (at most %.3f)\n",
+                touching, maxVolumeError, maxCentroidError, prismsOver, worstPrism);
+    EXPECT_GT(touching, 150);
+    // The test can fail: the normal prisms count the edges twice
+    EXPECT_GT(prismsOver, 50);
+}
+
+
+// In the inside corners of a container (concave edges, the solid outside
+// the box) the bisectors give the wedge below two faces to one of them: a
+// rock poking into a corner overlaps the triangles by exactly its volume
+// outside the box. The normal prisms leave that wedge to neither
+TEST(polyhedraOverlap, concaveEdgesAndCornersOfContainer)
+{
+    const Vec3 lo(-0.3, -0.2, -0.15), hi(0.3, 0.2, 0.15);
+    TriangleMesh container = test::closedBox(lo, hi);
+    for (auto& t : container.triangles) std::swap(t[1], t[2]);
+    const std::vector<double> depth = wallDepths(container);
+    const WallSidePlanes sides = wallSidePlanes(container);
+    const ConvexShape rock = makeRock(0.08, 0.8, 0.6, 20, 7);
+    std::mt19937_64 rng(37);
+    int touching = 0, prismsUnder = 0;
+    double maxVolumeError = 0, maxCentroidError = 0;
+    for (int k = 0; k < 400; ++k)
+    {
+        const Quaternion q = randomRotation(rng);
+        // Centre from 2 cm outside the corner's faces to 8 cm inside
+        const Vec3 pos = nearCorner(lo, hi, 0.02, 0.08, rng);
+        const test::ExactOverlap inside = test::exactOverlap(worldVertices(rock, pos, q), container.points);
+        const double volume = rock.volume - inside.volume;
+        const TriangleSum sum = overTriangles(rock, pos, q, container, depth, &sides);
+        const double error = std::fabs(sum.volume - volume) / rock.volume;
+        maxVolumeError = std::max(maxVolumeError, error);
+        EXPECT_LT(error, 1e-12) << "pose " << k << ": " << sum.volume << " against " << volume;
+        if (volume > 1e-3 * rock.volume)
+        {
+            ++touching;
+            const Vec3 centroid = (rock.volume * pos - inside.volume * inside.centroid) / volume;
+            const double centroidError = norm(sum.moment / sum.volume - centroid) / 0.08;
+            maxCentroidError = std::max(maxCentroidError, centroidError);
+            EXPECT_LT(centroidError, 1e-9) << "pose " << k;
+        }
+        const TriangleSum prisms = overTriangles(rock, pos, q, container, depth, nullptr);
+        if (volume - prisms.volume > 0.01 * rock.volume) ++prismsUnder;
+    }
+    std::printf("container, in its corners: %d poses overlapping; volume error %.2e of the rock's,"
+                " centroid %.2e of its size; normal prisms: %d poses under by > 1 %% of the rock\n",
+                touching, maxVolumeError, maxCentroidError, prismsUnder);
+    EXPECT_GT(touching, 150);
+    EXPECT_GT(prismsUnder, 30);
 }

@@ -168,3 +168,46 @@ TEST(PolyhedraWalls, slidesOnFineMeshAsOnPlane)
     EXPECT_NEAR(slid, expected, 0.02 * expected);
     EXPECT_LT(std::fabs(p.position[0].x - 0.0113), 1e-3) << "straight";
 }
+
+
+// A cube resting on a closed body with a quarter of its base over the edge
+// (its centre of mass over the body) stays where it is, tilted so that the
+// overlap's centroid is under its centre: a triangular overlap of depth
+// 2 mg/(Kn L a) at the edge (L: the supported length), the centre sunk by
+// two thirds of that. The edge is convex: the side face's solid meets the
+// top's on their bisector, so only a sliver of depth ~ the sink is the side
+// face's (a sideways push ~ sink/L of the weight, far below friction).
+// With each face's normal prism the side face's prism (0.1 m deep) held the
+// whole supported part again, with the same upward area vector: twice the
+// stiffness, and the cube sank and tilted half as much (2.18e-5 m and
+// 4.4e-4 rad against 4.36e-5 and 8.7e-4).
+TEST(PolyhedraWalls, restsOverConvexEdge)
+{
+    const double mu = 0.5, g = 9.81, Kn = 1e8;
+    const double overhang = 0.25 * a, L = a - overhang;
+    SimulationConfig cfg = test::polyhedronConfig(makeCube(a), 0.3, mu, Kn);
+    cfg.timeStep = 2e-5;
+    MeshWall w;
+    w.name = "table";
+    w.mesh = test::closedBox(Vec3(-0.5, -0.5, -0.2), Vec3(0.5, 0.5, 0));
+    cfg.meshes.push_back(w);
+    System s(cfg);
+    const Vec3 x0(0.5 + overhang - 0.5 * a, 0.0137, 0.5 * a);
+    Snapshot st = test::polyhedraAt(s, {x0}, {});
+    s.initialise(st);
+    s.advance(20000);   // 0.4 s: settled
+    const auto p = s.engine().particles();
+    const double mass = p.mass[0];
+    const double edgeDepth = 2 * mass * g / (Kn * L * a);
+    const double sink = 2.0 / 3.0 * edgeDepth;
+    const Vec3 up = rotate(p.orientation[0], Vec3(0, 0, 1));
+    const double tilt = std::atan2(up.x, up.z);   // about +y: the overhanging side down
+    // The base's centre: the centre moves (a/2) sin(tilt) as the cube tilts
+    const double slid = p.position[0].x - 0.5 * a * up.x - x0.x;
+    std::printf("cube over a convex edge: base slid %.3g m, sank %.4g (2/3 of 2 mg/(Kn L a): %.4g),"
+                " tilt %.4g rad (2 mg/(Kn L^2 a): %.4g)\n",
+                slid, 0.5 * a - p.position[0].z, sink, tilt, edgeDepth / L);
+    EXPECT_LT(std::fabs(slid), 1e-6) << "held by friction";
+    EXPECT_NEAR(0.5 * a - p.position[0].z, sink, 0.03 * sink) << "rest depth";
+    EXPECT_NEAR(tilt, edgeDepth / L, 0.05 * edgeDepth / L) << "tilt";
+}
