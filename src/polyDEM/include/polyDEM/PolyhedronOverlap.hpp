@@ -681,16 +681,33 @@ PD_INLINE ClipIntegrals halfSpaceClipIntegrals
     const Vec3* sideNormal, const double* sideOffset, int nSide, double tol
 )
 {
+    // The planes: those tilted against n first (nTilted), then the top and
+    // the sides parallel to n. A face of P lying in the top or a parallel
+    // side carries no flux and is dropped, so that the area vector is that
+    // of the wall's surface; one lying in a tilted side carries flux and is
+    // kept (the section below then finds nothing beyond that plane)
     Vec3 pn[1 + kMaxWallSidePlanes];
     double pd[1 + kMaxWallSidePlanes];
-    pn[0] = n;
-    pd[0] = 0;
+    int nTilted = 0;
     for (int k = 0; k < nSide; ++k)
     {
-        pn[k + 1] = sideNormal[k];
-        pd[k + 1] = sideOffset[k];
+        if (fabs(dot(sideNormal[k], n)) >= 1e-12)
+        {
+            pn[nTilted] = sideNormal[k];
+            pd[nTilted++] = sideOffset[k];
+        }
     }
-    const int nPlanes = 1 + nSide;
+    pn[nTilted] = n;
+    pd[nTilted] = 0;
+    int nPlanes = nTilted + 1;
+    for (int k = 0; k < nSide; ++k)
+    {
+        if (fabs(dot(sideNormal[k], n)) < 1e-12)
+        {
+            pn[nPlanes] = sideNormal[k];
+            pd[nPlanes++] = sideOffset[k];
+        }
+    }
 
     const Vec3 c = pos - o;
     Vec3Scratch<kMaxPolyhedronVertices> scratchV;
@@ -725,7 +742,7 @@ PD_INLINE ClipIntegrals halfSpaceClipIntegrals
         }
         Vec3* poly = nullptr;
         const Vec3 faceNormal = rotate(q, P.faceNormals[f]);
-        const int nv = clipPolygon(bufA, bufB, m, pn, pd, nPlanes, faceNormal, true, tol, poly);
+        const int nv = clipPolygon(bufA, bufB, m, pn, pd, nPlanes, faceNormal, true, tol, poly, nTilted);
         if (nv < 3) continue;
         const Vec3 polyArea = addClipFan(poly, nv, n, volume, hMoment, tMoment);
         twiceArea += polyArea;
@@ -739,17 +756,16 @@ PD_INLINE ClipIntegrals halfSpaceClipIntegrals
     for (int i = 0; i < P.nVertices && !below; ++i) below = hv[i] < -tol;
     if (below)
     {
-        for (int k = 1; k < nPlanes; ++k)
+        for (int k = 0; k < nTilted; ++k)
         {
-            if (fabs(dot(pn[k], n)) < 1e-12) continue;
             double s[kMaxPolyhedronVertices];
             bool anyOut = false;
             for (int i = 0; i < P.nVertices; ++i)
             {
                 s[i] = dot(pn[k], v[i]) - pd[k];
-                anyOut = anyOut || s[i] > 0;
+                anyOut = anyOut || s[i] > tol;
             }
-            if (!anyOut) continue;   // P wholly on the inner side
+            if (!anyOut) continue;   // P wholly on the inner side (or on it)
             const int ns = planeSection(P, v, s, bufA);
             if (ns < 3) continue;
             bool sectionBelow = false;   // else it misses the wall solid

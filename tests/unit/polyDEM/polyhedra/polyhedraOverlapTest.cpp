@@ -871,3 +871,28 @@ TEST(polyhedraOverlap, concaveEdgesAndCornersOfContainer)
     EXPECT_GT(touching, 150);
     EXPECT_GT(prismsUnder, 30);
 }
+
+
+// A particle face lying exactly in a bisector plane (a cube turned 45
+// degrees about a box's edge, its face through the edge, on either side):
+// that face carries flux and must be kept, not dropped as a face coplanar
+// with a clipping plane is (an earlier version lost half the overlap)
+TEST(polyhedraOverlap, faceInBisectorPlane)
+{
+    const Vec3 lo(-0.3, -0.2, -0.15), hi(0.3, 0.2, 0.15);
+    const TriangleMesh box = test::closedBox(lo, hi);
+    const std::vector<double> depth = wallDepths(box);
+    const WallSidePlanes sides = wallSidePlanes(box);
+    const ConvexShape cube = makeCube(0.04);
+    const Quaternion q{std::cos(pi / 8), 0, std::sin(pi / 8), 0};   // 45 degrees about y
+    const Vec3 m(std::sqrt(0.5), 0, -std::sqrt(0.5));   // the top's bisector with the x = 0.3 face
+    for (const double side : {1.0, -1.0})
+    {
+        // The face's centre on the bisector x - z = 0.15, 1 cm into the box
+        const Vec3 pos = Vec3(0.29, 0, 0.14) - side * 0.02 * m;
+        const test::ExactOverlap ref = test::exactOverlap(worldVertices(cube, pos, q), box.points);
+        const TriangleSum sum = overTriangles(cube, pos, q, box, depth, &sides);
+        EXPECT_NEAR(sum.volume, ref.volume, 1e-12 * cube.volume) << (side > 0 ? "top's side" : "side's side");
+        EXPECT_LT(norm(sum.moment / sum.volume - ref.centroid), 1e-12) << (side > 0 ? "top's side" : "side's side");
+    }
+}
