@@ -61,9 +61,11 @@
 // polyhedron. Exact to round-off: a particle over several triangles overlaps
 // them by its overlap with the body (polyhedraOverlap
 // convexEdgesAndCornersOfClosedBody, concaveEdgesAndCornersOfContainer).
-// Limits: at a saddle vertex the vertex bisectors that would cut a triangle
-// are left out (WallSidePlanes.hpp), and a body's solids are cut at the floor
-// depth, not at its medial surface.
+// Limits (WallSidePlanes.hpp): at a saddle vertex the vertex bisectors that
+// would cut a triangle are left out; only faces touching a triangle bound its
+// solid (a long triangle across a flat face can reach below a face it does
+// not touch); and a body's solids are cut at the floor depth, not at its
+// medial surface.
 //
 // Sphere-polyhedron: distance based (not an exact volume). The deepest point
 // and the normal come from the closest feature of the polyhedron (face, edge
