@@ -10,12 +10,16 @@
 #include "polyDEM/TriangleMesh.hpp"
 #include "polyDEM/Vec3.hpp"
 
+#include <cstdint>
 #include <utility>
 
 namespace polydem
 {
 
 //- Every (undirected) edge is shared by exactly two triangles
+//- Key of the directed edge a -> b (edgeKey(min, max) for an undirected one)
+std::uint64_t edgeKey(int a, int b);
+
 bool isClosed(const TriangleMesh& mesh);
 
 //- Closed and each directed edge used once (neighbours agree on orientation)

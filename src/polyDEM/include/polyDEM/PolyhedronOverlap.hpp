@@ -754,8 +754,8 @@ PD_INLINE ClipIntegrals halfSpaceClipIntegrals
     // (outward normal m_k) through which the fields carry flux. It can be
     // all there is (P holding the whole of a small triangle's solid), so it
     // is looked for whenever P reaches below the wall plane.
-    bool below = false;
-    for (int i = 0; i < P.nVertices && !below; ++i) below = hv[i] < -tol;
+    bool below = false;   // (no tilted side: nothing to look for)
+    for (int i = 0; i < P.nVertices && nTilted > 0 && !below; ++i) below = hv[i] < -tol;
     if (below)
     {
         for (int k = 0; k < nTilted; ++k)

@@ -18,11 +18,6 @@ namespace
 
 constexpr double pi = 3.14159265358979323846;
 
-std::uint64_t edgeKey(int a, int b)
-{
-    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
 // Solid angle of triangle (a, b, c) seen from the origin (van Oosterom and
 // Strackee 1983), signed by orientation
 double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c)
@@ -34,6 +29,12 @@ double solidAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 }
 
 } // namespace
+
+
+std::uint64_t edgeKey(int a, int b)
+{
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
 
 
 bool isClosed(const TriangleMesh& mesh)

@@ -2,6 +2,8 @@
 
 #include "polyDEM/WallSidePlanes.hpp"
 
+#include "polyDEM/MeshQueries.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -28,10 +30,10 @@ struct EdgeUse
     int count = 0;
 };
 
-std::uint64_t edgeKey(int a, int b)
+//- The undirected edge's key
+std::uint64_t undirectedKey(int a, int b)
 {
-    const std::uint64_t lo = std::uint64_t(std::min(a, b)), hi = std::uint64_t(std::max(a, b));
-    return (hi << 32) | lo;
+    return edgeKey(std::min(a, b), std::max(a, b));
 }
 
 } // namespace
@@ -52,7 +54,7 @@ WallSidePlanes wallSidePlanes(const TriangleMesh& mesh)
     {
         for (int k = 0; k < 3; ++k)
         {
-            EdgeUse& e = edges[edgeKey(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])];
+            EdgeUse& e = edges[undirectedKey(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3])];
             if (e.count < 2)
             {
                 e.triangle[e.count] = int(t);
@@ -89,7 +91,7 @@ WallSidePlanes wallSidePlanes(const TriangleMesh& mesh)
             {
                 edge = edge / length;
                 side = cross(edge, nT);   // in the triangle's plane, outward
-                const EdgeUse& e = edges.at(edgeKey(a, b));
+                const EdgeUse& e = edges.at(undirectedKey(a, b));
                 const int other = e.count == 2 ? (e.triangle[0] == int(t) ? 1 : 0) : -1;
                 if (other >= 0 && e.triangle[other] != int(t))
                 {
