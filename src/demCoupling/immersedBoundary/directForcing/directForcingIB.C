@@ -7,6 +7,7 @@
 #include "fvc.H"
 #include "fvMatrices.H"
 #include "syncTools.H"
+#include "regionSplit.H"
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +43,7 @@ Foam::directForcingIB::directForcingIB
             integral_ && !variableDensity
         )
     ),
+    trappedReportedAt_(-1),
     nu_(nu),
     minCrossing_(dict.getOrDefault<scalar>("minCrossing", 1e-3)),
     beta_
@@ -1139,11 +1141,99 @@ void Foam::directForcingIB::correctPressure
 }
 
 
+Foam::boolList Foam::directForcingIB::trappedFluidCells
+(
+    const volScalarField& p
+) const
+{
+    // Fluid regions as the closed faces leave them: every face touching a
+    // full cell is a wall (each full cell then makes a region of its own,
+    // which is not looked at)
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    boolList nbrFull;
+    syncTools::swapBoundaryCellList(mesh_, fullCell_, nbrFull);
+    boolList blocked(mesh_.nFaces(), false);
+    forAll(nei, facei)
+    {
+        blocked[facei] = fullCell_[own[facei]] || fullCell_[nei[facei]];
+    }
+    for (label facei = mesh_.nInternalFaces(); facei < mesh_.nFaces(); ++facei)
+    {
+        blocked[facei] =
+            fullCell_[own[facei]] || nbrFull[facei - mesh_.nInternalFaces()];
+    }
+    const regionSplit regions(mesh_, blocked);
+    const label nRegions = regions.nRegions();
+
+    // Each fluid region's size and whether a patch fixes its pressure
+    labelList nFluidCells(nRegions, Zero);
+    labelList fixed(nRegions, Zero);
+    forAll(fullCell_, celli)
+    {
+        if (!fullCell_[celli])
+        {
+            ++nFluidCells[regions[celli]];
+        }
+    }
+    forAll(p.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        if (pp.coupled() || !pp.fixesValue())
+        {
+            continue;
+        }
+        for (const label celli : pp.patch().faceCells())
+        {
+            if (!fullCell_[celli])
+            {
+                fixed[regions[celli]] = 1;
+            }
+        }
+    }
+    Pstream::listCombineGather(nFluidCells, plusEqOp<label>());
+    Pstream::listCombineScatter(nFluidCells);
+    Pstream::listCombineGather(fixed, maxEqOp<label>());
+    Pstream::listCombineScatter(fixed);
+
+    // Open: every region a patch fixes; where none does (a closed box, the
+    // level set by a reference cell), the largest one
+    boolList open(nRegions, false);
+    bool anyFixed = false;
+    label largest = -1;
+    forAll(open, regioni)
+    {
+        open[regioni] = fixed[regioni] > 0;
+        anyFixed = anyFixed || open[regioni];
+        if
+        (
+            nFluidCells[regioni] > 0
+         && (largest < 0 || nFluidCells[regioni] > nFluidCells[largest])
+        )
+        {
+            largest = regioni;
+        }
+    }
+    if (!anyFixed && largest >= 0)
+    {
+        open[largest] = true;
+    }
+
+    boolList trapped(mesh_.nCells(), false);
+    forAll(trapped, celli)
+    {
+        trapped[celli] = !fullCell_[celli] && !open[regions[celli]];
+    }
+    return trapped;
+}
+
+
 void Foam::directForcingIB::closeSurface
 (
     surfaceScalarField& phiHbyA,
     surfaceScalarField& rAUf,
-    const UList<ibBody>& bodies
+    const UList<ibBody>& bodies,
+    const volScalarField& p
 ) const
 {
     const labelUList& own = mesh_.owner();
@@ -1170,10 +1260,31 @@ void Foam::directForcingIB::closeSurface
         }
     }
 
+    // Fluid that the closed faces would cut off keeps its faces open: the
+    // held pressure of the bodies' full cells then sets its level (as
+    // with the open surface), where closed it would have none
+    const boolList trapped(trappedFluidCells(p));
+    label nTrapped = 0;
+    forAll(trapped, celli)
+    {
+        if (trapped[celli])
+        {
+            ++nTrapped;
+        }
+    }
+    reduce(nTrapped, sumOp<label>());
+    if (nTrapped > 0 && trappedReportedAt_ != mesh_.time().timeIndex())
+    {
+        trappedReportedAt_ = mesh_.time().timeIndex();
+        Info<< "Closed surface: " << nTrapped << " fluid cells trapped between"
+            << " bodies (and walls) keep their faces to the bodies open"
+            << endl;
+    }
+
     forAll(nei, facei)
     {
         const label bi = faceBody(fullBody[own[facei]], fullBody[nei[facei]]);
-        if (bi >= 0)
+        if (bi >= 0 && !trapped[own[facei]] && !trapped[nei[facei]])
         {
             phiHbyA[facei] = bodies[bi].rigidVelocity(Cf[facei]) & Sf[facei];
             rAUf[facei] = 0;
@@ -1182,6 +1293,8 @@ void Foam::directForcingIB::closeSurface
 
     labelList nbrFullBody;
     syncTools::swapBoundaryCellList(mesh_, fullBody, nbrFullBody);
+    boolList nbrTrapped;
+    syncTools::swapBoundaryCellList(mesh_, trapped, nbrTrapped);
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& pp = mesh_.boundary()[patchi];
@@ -1196,10 +1309,117 @@ void Foam::directForcingIB::closeSurface
         {
             const label bFacei = pp.start() + i - mesh_.nInternalFaces();
             const label bi = faceBody(fullBody[fc[i]], nbrFullBody[bFacei]);
-            if (bi >= 0)
+            if (bi >= 0 && !trapped[fc[i]] && !nbrTrapped[bFacei])
             {
                 pPhi[i] = bodies[bi].rigidVelocity(pp.Cf()[i]) & pp.Sf()[i];
                 pRAU[i] = 0;
+            }
+        }
+    }
+
+    balanceClosedFaces(phiHbyA, fullBody, nbrFullBody, trapped, nbrTrapped, bodies.size());
+}
+
+
+void Foam::directForcingIB::balanceClosedFaces
+(
+    surfaceScalarField& phiHbyA,
+    const labelUList& fullBody,
+    const labelUList& nbrFullBody,
+    const boolList& trapped,
+    const boolList& nbrTrapped,
+    const label nBodies
+) const
+{
+    // A body's closed faces to the fluid: the full cell on one side, a
+    // fluid cell (not trapped: its faces are open) on the other
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const scalarField& magSf = mesh_.magSf();
+    auto fluidFace = [&](const label fullB, const label otherB, const bool t1, const bool t2)
+    {
+        return fullB >= 0 && otherB < 0 && !t1 && !t2;
+    };
+
+    // Net outflow and area of each body's closed fluid faces (each
+    // processor face counted on the side of the full cell)
+    scalarList netOut(nBodies, Zero);
+    scalarList area(nBodies, Zero);
+    forAll(nei, facei)
+    {
+        const label o = own[facei], n = nei[facei];
+        if (fluidFace(fullBody[o], fullBody[n], trapped[o], trapped[n]))
+        {
+            netOut[fullBody[o]] += phiHbyA[facei];
+            area[fullBody[o]] += magSf[facei];
+        }
+        else if (fluidFace(fullBody[n], fullBody[o], trapped[o], trapped[n]))
+        {
+            netOut[fullBody[n]] -= phiHbyA[facei];
+            area[fullBody[n]] += magSf[facei];
+        }
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& pp = mesh_.boundary()[patchi];
+        if (!pp.coupled())
+        {
+            continue;
+        }
+        const labelUList& fc = pp.faceCells();
+        const fvsPatchScalarField& pPhi = phiHbyA.boundaryField()[patchi];
+        forAll(pp, i)
+        {
+            const label bFacei = pp.start() + i - mesh_.nInternalFaces();
+            if (fluidFace(fullBody[fc[i]], nbrFullBody[bFacei], trapped[fc[i]], nbrTrapped[bFacei]))
+            {
+                netOut[fullBody[fc[i]]] += pPhi[i];
+                area[fullBody[fc[i]]] += pp.magSf()[i];
+            }
+        }
+    }
+    Pstream::listCombineGather(netOut, plusEqOp<scalar>());
+    Pstream::listCombineScatter(netOut);
+    Pstream::listCombineGather(area, plusEqOp<scalar>());
+    Pstream::listCombineScatter(area);
+
+    // Take each body's net outflow off its faces in proportion to their area
+    scalarList perArea(nBodies, Zero);
+    forAll(perArea, bi)
+    {
+        perArea[bi] = area[bi] > 0 ? netOut[bi]/area[bi] : 0;
+    }
+    forAll(nei, facei)
+    {
+        const label o = own[facei], n = nei[facei];
+        if (fluidFace(fullBody[o], fullBody[n], trapped[o], trapped[n]))
+        {
+            phiHbyA[facei] -= perArea[fullBody[o]]*magSf[facei];
+        }
+        else if (fluidFace(fullBody[n], fullBody[o], trapped[o], trapped[n]))
+        {
+            phiHbyA[facei] += perArea[fullBody[n]]*magSf[facei];
+        }
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& pp = mesh_.boundary()[patchi];
+        if (!pp.coupled())
+        {
+            continue;
+        }
+        const labelUList& fc = pp.faceCells();
+        fvsPatchScalarField& pPhi = phiHbyA.boundaryFieldRef()[patchi];
+        forAll(pp, i)
+        {
+            const label bFacei = pp.start() + i - mesh_.nInternalFaces();
+            if (fluidFace(fullBody[fc[i]], nbrFullBody[bFacei], trapped[fc[i]], nbrTrapped[bFacei]))
+            {
+                pPhi[i] -= perArea[fullBody[fc[i]]]*pp.magSf()[i];
+            }
+            else if (fluidFace(nbrFullBody[bFacei], fullBody[fc[i]], trapped[fc[i]], nbrTrapped[bFacei]))
+            {
+                pPhi[i] += perArea[nbrFullBody[bFacei]]*pp.magSf()[i];
             }
         }
     }
