@@ -1146,9 +1146,10 @@ Foam::boolList Foam::directForcingIB::trappedFluidCells
     const volScalarField& p
 ) const
 {
-    // Fluid regions as the closed faces leave them: every face touching a
-    // full cell is a wall (each full cell then makes a region of its own,
-    // which is not looked at)
+    // Fluid regions as the closed faces leave them: every face between a
+    // full cell and a fluid cell is a wall (the full cells make regions of
+    // their own, one per group of touching bodies, which are not looked at;
+    // so the lists below stay as short as the regions are few)
     const labelUList& own = mesh_.owner();
     const labelUList& nei = mesh_.neighbour();
     boolList nbrFull;
@@ -1156,12 +1157,12 @@ Foam::boolList Foam::directForcingIB::trappedFluidCells
     boolList blocked(mesh_.nFaces(), false);
     forAll(nei, facei)
     {
-        blocked[facei] = fullCell_[own[facei]] || fullCell_[nei[facei]];
+        blocked[facei] = fullCell_[own[facei]] != fullCell_[nei[facei]];
     }
     for (label facei = mesh_.nInternalFaces(); facei < mesh_.nFaces(); ++facei)
     {
         blocked[facei] =
-            fullCell_[own[facei]] || nbrFull[facei - mesh_.nInternalFaces()];
+            fullCell_[own[facei]] != nbrFull[facei - mesh_.nInternalFaces()];
     }
     const regionSplit regions(mesh_, blocked);
     const label nRegions = regions.nRegions();
